@@ -1,0 +1,27 @@
+#pragma once
+// Parses a sub-command's arguments with CLI11 and turns its errors into zcube's conventions.
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "util/error.hpp"
+
+namespace zc::cli {
+
+// Returns -1 when parsing succeeded and the command should run, else the exit status to return
+// (0 after --help). Usage errors throw UsageError (exit status 2).
+inline int parse(CLI::App& app, std::vector<std::string> args) {
+  std::reverse(args.begin(), args.end()); // CLI11 consumes a vector from the back
+  try {
+    app.parse(args);
+  } catch (const CLI::CallForHelp& e) {
+    std::cout << app.help();
+    return 0;
+  } catch (const CLI::ParseError& e) {
+    throw UsageError(app.get_name() + ": " + e.what());
+  }
+  return -1;
+}
+
+} // namespace zc::cli

@@ -1,0 +1,36 @@
+#pragma once
+// The renderer's work, counted exactly. These counts are what the simulator charges to a modelled
+// CPU (machine/cost_table), so every one is deterministic: the same scene gives the same counts on
+// any thread count, and a partition of the work across nodes sums to the sequential counts
+// (except where an algorithm duplicates work on purpose, e.g. triangles crossing slices).
+#include <cstdint>
+
+#include <nlohmann/json_fwd.hpp>
+
+namespace zc {
+
+struct Counters {
+  std::uint64_t vertices_transformed = 0; // model-view-projection + Gouraud lighting of one vertex
+  std::uint64_t triangles_in = 0;         // triangles submitted to set-up
+  std::uint64_t triangles_culled = 0;     // back-facing (when culling), off-screen or zero-area
+  std::uint64_t triangles_clipped = 0;    // triangles that crossed a clip plane
+  std::uint64_t triangles_setup = 0;      // screen triangles set up (after clipping)
+  std::uint64_t spans = 0;                // non-empty (row, triangle) spans rasterised
+  std::uint64_t pixels_generated = 0;     // fragments produced (TPG of Kurc et al.)
+  std::uint64_t pixels_tested = 0;        // depth comparisons against a stored pixel
+  std::uint64_t pixels_written = 0;       // fragments that won their depth test
+  std::uint64_t pixels_final = 0;         // covered pixels of the final image (TPF)
+  std::uint64_t texels_fetched = 0;       // texture samples (0 for an untextured scene)
+  std::uint64_t pixels_cleared = 0;       // frame/z-buffer locations initialised
+  std::uint64_t merge_ops = 0;            // pixel comparisons while merging partial images
+  std::uint64_t bytes_packed = 0;         // bytes copied into or out of message buffers
+
+  Counters& operator+=(const Counters& o);
+  friend Counters operator+(Counters a, const Counters& b) { return a += b; }
+  Counters operator-(const Counters& o) const;
+  bool operator==(const Counters&) const = default;
+};
+
+void to_json(nlohmann::json& j, const Counters& c);
+
+} // namespace zc

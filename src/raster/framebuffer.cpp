@@ -1,0 +1,63 @@
+#include "raster/framebuffer.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace zc {
+
+static std::uint8_t to_byte(float c) {
+  const float v = c <= 0.f ? 0.f : (c >= 1.f ? 1.f : c);
+  return static_cast<std::uint8_t>(std::lround(v * 255.f));
+}
+
+Framebuffer::Framebuffer(int width, RowSet rows, glm::vec3 background)
+    : width_(width), rows_(rows) {
+  const std::size_t n = std::size_t(width) * std::size_t(rows.count());
+  rgb_.resize(3 * n);
+  depth_.assign(n, std::numeric_limits<float>::infinity());
+  ids_.assign(n, kNoTriangle);
+  const std::uint8_t bg[3] = {to_byte(background.x), to_byte(background.y), to_byte(background.z)};
+  for (std::size_t i = 0; i < n; ++i) {
+    rgb_[3 * i] = bg[0];
+    rgb_[3 * i + 1] = bg[1];
+    rgb_[3 * i + 2] = bg[2];
+  }
+}
+
+std::uint64_t Framebuffer::merge(const Framebuffer& o) {
+  if (o.width_ != width_ || o.ids_.size() != ids_.size())
+    throw std::logic_error("Framebuffer::merge: shapes differ");
+  std::uint64_t compares = 0;
+  for (std::size_t i = 0; i < ids_.size(); ++i) {
+    if (o.ids_[i] == kNoTriangle) continue;
+    ++compares;
+    if (in_front(o.depth_[i], o.ids_[i], depth_[i], ids_[i])) {
+      depth_[i] = o.depth_[i];
+      ids_[i] = o.ids_[i];
+      for (int k = 0; k < 3; ++k) rgb_[3 * i + k] = o.rgb_[3 * i + k];
+    }
+  }
+  return compares;
+}
+
+void Framebuffer::paste(const Framebuffer& part) {
+  const RowSet& pr = part.rows();
+  for (int y = pr.begin; y < pr.end; y += pr.stride) {
+    if (!rows_.contains(y)) continue;
+    const std::size_t src = std::size_t(pr.local(y)) * width_;
+    const std::size_t dst = std::size_t(rows_.local(y)) * width_;
+    for (int x = 0; x < width_; ++x) {
+      depth_[dst + x] = part.depth_[src + x];
+      ids_[dst + x] = part.ids_[src + x];
+      for (int k = 0; k < 3; ++k) rgb_[3 * (dst + x) + k] = part.rgb_[3 * (src + x) + k];
+    }
+  }
+}
+
+std::uint64_t Framebuffer::covered() const {
+  std::uint64_t n = 0;
+  for (auto id : ids_) n += id != kNoTriangle;
+  return n;
+}
+
+} // namespace zc

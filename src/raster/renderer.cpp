@@ -1,0 +1,91 @@
+#include "raster/renderer.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+#include "raster/zbuffer.hpp"
+
+namespace zc {
+
+NodeRenderer::NodeRenderer(const Scene& scene)
+    : view_(make_view(scene)), shade_(ShadeContext::of(scene)), background_(scene.background),
+      cull_back_(scene.cull == CullMode::Back) {}
+
+void NodeRenderer::setup(std::uint32_t id, const Triangle& tri, const ProjectedVertex* const pv[3],
+                         const glm::vec2* const uv[3], TriangleBatch& out, Counters& c) const {
+  SetupInput in{{pv[0], pv[1], pv[2]}, {nullptr, nullptr, nullptr}, id, tri.material};
+  if (shade_.textures && uv && (*shade_.materials)[tri.material].texture >= 0)
+    for (int k = 0; k < 3; ++k) in.uv[k] = uv[k];
+  setup_triangle(in, view_.width, view_.height, cull_back_, out, c);
+}
+
+namespace {
+
+// Runs f(worker) on `n` workers (the calling thread is worker 0) and joins them.
+template <class F> void run_workers(int n, F&& f) {
+  std::vector<std::thread> ts;
+  for (int w = 1; w < n; ++w) ts.emplace_back([&f, w] { f(w); });
+  f(0);
+  for (auto& t : ts) t.join();
+}
+
+} // namespace
+
+RenderResult render_scene(const Scene& scene, int threads) {
+  const auto t0 = std::chrono::steady_clock::now();
+  threads = std::max(1, threads);
+  const NodeRenderer nr(scene);
+  RenderResult res{nr.make_framebuffer(RowSet::all(scene.height)), {}, 0};
+  std::vector<Counters> tc(threads);
+
+  // 1. Vertex stage, contiguous chunks per thread.
+  std::vector<ProjectedVertex> pv(scene.vertices.size());
+  run_workers(threads, [&](int w) {
+    const std::size_t n = pv.size(), lo = n * w / threads, hi = n * (w + 1) / threads;
+    for (std::size_t i = lo; i < hi; ++i) pv[i] = nr.project(scene.vertices[i], tc[w]);
+  });
+
+  // 2. Triangles in chunks: set-up split by triangle ranges, rasterisation split by row bands.
+  const bool textured = scene.textured();
+  const int band_h = threads == 1 ? std::max(1, scene.height)
+                                  : std::max(4, scene.height / (threads * 8));
+  const int bands = (scene.height + band_h - 1) / band_h;
+  constexpr std::size_t kChunk = 1 << 16;
+  std::vector<TriangleBatch> batches(threads);
+  for (std::size_t c0 = 0; c0 < scene.triangles.size(); c0 += kChunk) {
+    const std::size_t c1 = std::min(scene.triangles.size(), c0 + kChunk);
+    run_workers(threads, [&](int w) {
+      TriangleBatch& b = batches[w];
+      b.clear();
+      const std::size_t n = c1 - c0, lo = c0 + n * w / threads, hi = c0 + n * (w + 1) / threads;
+      for (std::size_t i = lo; i < hi; ++i) {
+        const Triangle& t = scene.triangles[i];
+        const ProjectedVertex* p[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
+        const glm::vec2* uv[3] = {nullptr, nullptr, nullptr};
+        if (textured)
+          for (int k = 0; k < 3; ++k) uv[k] = &scene.uvs[t.v[k]];
+        nr.setup(std::uint32_t(i), t, p, textured ? uv : nullptr, b, tc[w]);
+      }
+    });
+    std::atomic<int> next{0};
+    run_workers(threads, [&](int w) {
+      for (int band; (band = next.fetch_add(1)) < bands;) {
+        const RowSet rows = RowSet::band(band * band_h, std::min(scene.height, (band + 1) * band_h));
+        for (const auto& b : batches)
+          for (const auto& t : b.tris)
+            if (t.ymax >= rows.begin && t.ymin < rows.end)
+              draw_triangle(t, b, nr.shade(), rows, res.image, tc[w]);
+      }
+    });
+  }
+  for (const auto& c : tc) res.counters += c;
+  res.counters.pixels_cleared = std::uint64_t(scene.width) * scene.height;
+  res.counters.pixels_final = res.image.covered();
+  res.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return res;
+}
+
+} // namespace zc

@@ -1,0 +1,165 @@
+#include "raster/setup.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "geometry/clip.hpp"
+
+namespace zc {
+namespace {
+
+inline std::int64_t floor_div(std::int64_t a, std::int64_t b) { // b > 0
+  std::int64_t q = a / b;
+  return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+inline std::int64_t ceil_div(std::int64_t a, std::int64_t b) { return -floor_div(-a, b); } // b > 0
+
+struct SnapVertex {
+  std::int64_t X, Y; // fixed point
+  double z;          // window depth
+  double attr[5];    // r g b, and u v when textured
+  double invw;
+};
+
+AttrPlane make_plane(const SnapVertex* s, double a0v, double a1v, double a2v, double den) {
+  // Plane through the three snapped vertices, in pixel units, evaluated at pixel centres.
+  const double x0 = double(s[0].X) / kSub, y0 = double(s[0].Y) / kSub;
+  const double x1 = double(s[1].X) / kSub - x0, y1 = double(s[1].Y) / kSub - y0;
+  const double x2 = double(s[2].X) / kSub - x0, y2 = double(s[2].Y) / kSub - y0;
+  const double d1 = a1v - a0v, d2 = a2v - a0v;
+  AttrPlane p;
+  p.ax = (d1 * y2 - d2 * y1) / den;
+  p.ay = (d2 * x1 - d1 * x2) / den;
+  p.a0 = a0v - p.ax * x0 - p.ay * y0 + 0.5 * p.ax + 0.5 * p.ay;
+  return p;
+}
+
+void emit(const SnapVertex* s, const SetupInput& in, bool textured, int width, int height,
+          TriangleBatch& out, Counters& c) {
+  SnapVertex v[3] = {s[0], s[1], s[2]};
+  std::int64_t area2 = (v[1].X - v[0].X) * (v[2].Y - v[0].Y) - (v[2].X - v[0].X) * (v[1].Y - v[0].Y);
+  if (area2 == 0) {
+    ++c.triangles_culled;
+    return;
+  }
+  if (area2 < 0) {
+    std::swap(v[1], v[2]);
+    area2 = -area2;
+  }
+  ScreenTriangle t;
+  t.id = in.id;
+  t.material = in.material;
+  const std::int64_t miny = std::min({v[0].Y, v[1].Y, v[2].Y});
+  const std::int64_t maxy = std::max({v[0].Y, v[1].Y, v[2].Y});
+  t.ymin = int(std::max<std::int64_t>(0, ceil_div(miny - kSub / 2, kSub)));
+  t.ymax = int(std::min<std::int64_t>(height - 1, floor_div(maxy - kSub / 2, kSub)));
+  const std::int64_t minx = std::min({v[0].X, v[1].X, v[2].X});
+  const std::int64_t maxx = std::max({v[0].X, v[1].X, v[2].X});
+  if (t.ymin > t.ymax || ceil_div(minx - kSub / 2, kSub) > width - 1 ||
+      floor_div(maxx - kSub / 2, kSub) < 0) {
+    ++c.triangles_culled; // touches no pixel centre on screen
+    return;
+  }
+  for (int e = 0; e < 3; ++e) {
+    const SnapVertex& p = v[e];
+    const SnapVertex& q = v[(e + 1) % 3];
+    t.A[e] = p.Y - q.Y;
+    t.B[e] = q.X - p.X;
+    t.C[e] = p.X * q.Y - q.X * p.Y;
+    const bool top_left = t.A[e] > 0 || (t.A[e] == 0 && t.B[e] > 0);
+    t.bias[e] = top_left ? 0 : 1;
+  }
+  const double den = double(area2) / double(kSub * kSub);
+  t.z = make_plane(v, v[0].z, v[1].z, v[2].z, den);
+  t.r = make_plane(v, v[0].attr[0], v[1].attr[0], v[2].attr[0], den);
+  t.g = make_plane(v, v[0].attr[1], v[1].attr[1], v[2].attr[1], den);
+  t.b = make_plane(v, v[0].attr[2], v[1].attr[2], v[2].attr[2], den);
+  if (textured) {
+    TexPlanes tp;
+    tp.uw = make_plane(v, v[0].attr[3] * v[0].invw, v[1].attr[3] * v[1].invw,
+                       v[2].attr[3] * v[2].invw, den);
+    tp.vw = make_plane(v, v[0].attr[4] * v[0].invw, v[1].attr[4] * v[1].invw,
+                       v[2].attr[4] * v[2].invw, den);
+    tp.w1 = make_plane(v, v[0].invw, v[1].invw, v[2].invw, den);
+    t.tex = std::int32_t(out.tex.size());
+    out.tex.push_back(tp);
+  }
+  ++c.triangles_setup;
+  out.tris.push_back(t);
+}
+
+SnapVertex snap(const ClipVertex& cv, int width, int height) {
+  const double invw = 1.0 / cv.a[3];
+  const double sx = (cv.a[0] * invw * 0.5 + 0.5) * width;
+  const double sy = (0.5 - cv.a[1] * invw * 0.5) * height;
+  SnapVertex s;
+  s.X = std::llround(sx * kSub);
+  s.Y = std::llround(sy * kSub);
+  s.z = cv.a[2] * invw * 0.5 + 0.5;
+  s.invw = invw;
+  for (int i = 0; i < 5; ++i) s.attr[i] = cv.a[4 + i];
+  return s;
+}
+
+} // namespace
+
+bool ScreenTriangle::span(int y, int width, int& x0, int& x1) const {
+  const std::int64_t py = std::int64_t(y) * kSub + kSub / 2;
+  std::int64_t lo = 0, hi = width - 1;
+  for (int e = 0; e < 3; ++e) {
+    const std::int64_t K = A[e] * (kSub / 2) + B[e] * py + C[e] - bias[e];
+    if (A[e] > 0) {
+      lo = std::max(lo, ceil_div(-K, A[e] * kSub));
+    } else if (A[e] < 0) {
+      hi = std::min(hi, floor_div(K, -A[e] * kSub));
+    } else if (K < 0) {
+      return false;
+    }
+  }
+  if (lo > hi) return false;
+  x0 = int(lo);
+  x1 = int(hi);
+  return true;
+}
+
+void setup_triangle(const SetupInput& in, int width, int height, bool cull_back, TriangleBatch& out,
+                    Counters& c) {
+  ++c.triangles_in;
+  const bool textured = in.uv[0] != nullptr;
+  ClipPolygon poly;
+  poly.n = 3;
+  for (int i = 0; i < 3; ++i) {
+    auto& a = poly.v[i].a;
+    for (int k = 0; k < 4; ++k) a[k] = in.v[i]->clip[k];
+    for (int k = 0; k < 3; ++k) a[4 + k] = in.v[i]->light[k];
+    a[7] = textured ? in.uv[i]->x : 0.0;
+    a[8] = textured ? in.uv[i]->y : 0.0;
+  }
+  const ClipResult cr = clip_polygon(poly, kGuardBand);
+  if (cr == kClipOutside) {
+    ++c.triangles_culled;
+    return;
+  }
+  if (cr == kClipCut) ++c.triangles_clipped;
+
+  SnapVertex s[kClipMaxVerts];
+  for (int i = 0; i < poly.n; ++i) s[i] = snap(poly.v[i], width, height);
+
+  if (cull_back) {
+    // Facing is decided on the whole (clipped) polygon: y points down on screen, so a
+    // counter-clockwise (front-facing) polygon has a negative signed area here.
+    std::int64_t area2 = 0;
+    for (int i = 1; i + 1 < poly.n; ++i)
+      area2 += (s[i].X - s[0].X) * (s[i + 1].Y - s[0].Y) - (s[i + 1].X - s[0].X) * (s[i].Y - s[0].Y);
+    if (area2 >= 0) {
+      ++c.triangles_culled;
+      return;
+    }
+  }
+  for (int i = 1; i + 1 < poly.n; ++i) {
+    const SnapVertex fan[3] = {s[0], s[i], s[i + 1]};
+    emit(fan, in, textured, width, height, out, c);
+  }
+}
+
+} // namespace zc

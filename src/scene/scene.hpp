@@ -1,0 +1,88 @@
+#pragma once
+// The scene as every part of zcube sees it: a camera, an image size, lights, and an indexed
+// triangle soup in world space (Charles et al. §4: "a set of vertices and a set of triangles").
+// Triangle ids are the indices into `triangles`; they are global and stable, and they break depth
+// ties (equal depth: the lower id wins), so any partition of the work reproduces the same image.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace zc {
+
+struct Camera {
+  glm::dvec3 eye{0, 0, 5};
+  glm::dvec3 target{0, 0, 0};
+  glm::dvec3 up{0, 1, 0};
+  double fovy_deg = 45.0; // vertical field of view
+  double znear = 0;       // 0 = derived from the scene's bounds
+  double zfar = 0;        // 0 = derived from the scene's bounds
+};
+
+struct DirectionalLight {
+  glm::vec3 direction{-1, -1, -1}; // direction the light travels (towards the scene)
+  glm::vec3 color{1, 1, 1};
+};
+
+// A texture in memory, RGB8, rows top to bottom. Loaded only when a material uses it.
+struct Texture {
+  std::string path;
+  int width = 0;
+  int height = 0;
+  std::vector<std::uint8_t> rgb;
+};
+
+enum class TextureFilter { Nearest, Bilinear };
+
+struct Material {
+  std::string name;
+  glm::vec3 kd{0.8f, 0.8f, 0.8f}; // diffuse colour, 0..1
+  int texture = -1;               // index into Scene::textures, -1 = none
+};
+
+struct Vertex {
+  glm::vec3 position{0};
+  glm::vec3 normal{0, 0, 1};
+};
+
+struct Triangle {
+  std::uint32_t v[3] = {0, 0, 0}; // indices into Scene::vertices (and Scene::uvs when textured)
+  std::uint32_t material = 0;     // index into Scene::materials
+};
+
+// A primitive as a scene description states it (Blazek ch. IV): kept so that methods which ship
+// descriptions instead of polygons (node initiated, object forwarding) can re-tessellate it on a
+// node. Tessellating `desc` yields exactly triangles [first_triangle, first_triangle+triangle_count)
+// and vertices [first_vertex, first_vertex+vertex_count) of the scene, bit for bit.
+struct ObjectDesc {
+  std::string kind; // "sphere", "cube", "cone", "cylinder", "spheroid", "bezier", "mesh"
+  std::string text; // canonical one-line description (what the host would send), ~100 bytes
+  std::uint32_t first_vertex = 0, vertex_count = 0;
+  std::uint32_t first_triangle = 0, triangle_count = 0;
+};
+
+enum class CullMode { None, Back };
+
+struct Scene {
+  std::string path; // where it was loaded from (for messages and reports)
+  Camera camera;
+  int width = 512;
+  int height = 512;
+  glm::vec3 background{0, 0, 0};
+  glm::vec3 ambient{0.15f, 0.15f, 0.15f};
+  std::vector<DirectionalLight> lights;
+  CullMode cull = CullMode::None;
+  TextureFilter filter = TextureFilter::Bilinear;
+
+  std::vector<Vertex> vertices;
+  std::vector<glm::vec2> uvs; // empty for an untextured scene; else one per vertex
+  std::vector<Triangle> triangles;
+  std::vector<Material> materials{Material{}};
+  std::vector<Texture> textures;
+  std::vector<ObjectDesc> objects;
+
+  bool textured() const { return !textures.empty() && !uvs.empty(); }
+};
+
+} // namespace zc

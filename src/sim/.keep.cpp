@@ -1,0 +1,1 @@
+// Keeps the zcube_sim library non-empty while its folders fill up.
