@@ -8,7 +8,8 @@
 
 namespace zc::cli {
 
-using CommandFn = std::function<int(std::vector<std::string> args)>; // args exclude the command name
+using CommandFn =
+    std::function<int(std::vector<std::string> args)>; // args exclude the command name
 
 struct CommandInfo {
   std::string summary;

@@ -16,7 +16,8 @@ std::map<std::string, CommandInfo>& registry() {
 } // namespace zc::cli
 
 static void usage(std::ostream& os) {
-  os << "usage: zcube <command> [options]   (zcube <command> --help for its options)\n\ncommands:\n";
+  os << "usage: zcube <command> [options]   (zcube <command> --help for its "
+        "options)\n\ncommands:\n";
   for (const auto& [name, info] : zc::cli::registry())
     os << "  " << name << std::string(name.size() < 12 ? 12 - name.size() : 1, ' ') << info.summary
        << "\n";

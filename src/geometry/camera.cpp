@@ -19,7 +19,8 @@ void Bounds::add(const glm::dvec3& p) {
 
 Bounds scene_bounds(const Scene& s) {
   Bounds b;
-  for (const auto& v : s.vertices) b.add(glm::dvec3(v.position));
+  for (const auto& v : s.vertices)
+    b.add(glm::dvec3(v.position));
   return b;
 }
 
@@ -33,7 +34,9 @@ void resolve_clip_planes(const Camera& cam, const Bounds& b, double& znear, doub
   if (!(zfar > znear)) zfar = std::max(d + r, znear * 2.0) * 1.05;
 }
 
-glm::dmat4 view_matrix(const Camera& cam) { return glm::lookAt(cam.eye, cam.target, cam.up); }
+glm::dmat4 view_matrix(const Camera& cam) {
+  return glm::lookAt(cam.eye, cam.target, cam.up);
+}
 
 glm::dmat4 projection_matrix(const Camera& cam, double aspect, double znear, double zfar) {
   return glm::perspective(glm::radians(cam.fovy_deg), aspect, znear, zfar);

@@ -12,7 +12,7 @@
 
 namespace zc {
 
-constexpr int kClipAttrs = 9;   // x y z w | r g b | u v
+constexpr int kClipAttrs = 9;    // x y z w | r g b | u v
 constexpr int kClipMaxVerts = 9; // a triangle cut by 6 planes has at most 9 vertices
 
 struct ClipVertex {

@@ -34,7 +34,8 @@ std::uint64_t Framebuffer::merge(const Framebuffer& o) {
     if (in_front(o.depth_[i], o.ids_[i], depth_[i], ids_[i])) {
       depth_[i] = o.depth_[i];
       ids_[i] = o.ids_[i];
-      for (int k = 0; k < 3; ++k) rgb_[3 * i + k] = o.rgb_[3 * i + k];
+      for (int k = 0; k < 3; ++k)
+        rgb_[3 * i + k] = o.rgb_[3 * i + k];
     }
   }
   return compares;
@@ -49,14 +50,16 @@ void Framebuffer::paste(const Framebuffer& part) {
     for (int x = 0; x < width_; ++x) {
       depth_[dst + x] = part.depth_[src + x];
       ids_[dst + x] = part.ids_[src + x];
-      for (int k = 0; k < 3; ++k) rgb_[3 * (dst + x) + k] = part.rgb_[3 * (src + x) + k];
+      for (int k = 0; k < 3; ++k)
+        rgb_[3 * (dst + x) + k] = part.rgb_[3 * (src + x) + k];
     }
   }
 }
 
 std::uint64_t Framebuffer::covered() const {
   std::uint64_t n = 0;
-  for (auto id : ids_) n += id != kNoTriangle;
+  for (auto id : ids_)
+    n += id != kNoTriangle;
   return n;
 }
 

@@ -17,7 +17,8 @@ void NodeRenderer::setup(std::uint32_t id, const Triangle& tri, const ProjectedV
                          const glm::vec2* const uv[3], TriangleBatch& out, Counters& c) const {
   SetupInput in{{pv[0], pv[1], pv[2]}, {nullptr, nullptr, nullptr}, id, tri.material};
   if (shade_.textures && uv && (*shade_.materials)[tri.material].texture >= 0)
-    for (int k = 0; k < 3; ++k) in.uv[k] = uv[k];
+    for (int k = 0; k < 3; ++k)
+      in.uv[k] = uv[k];
   setup_triangle(in, view_.width, view_.height, cull_back_, out, c);
 }
 
@@ -26,9 +27,11 @@ namespace {
 // Runs f(worker) on `n` workers (the calling thread is worker 0) and joins them.
 template <class F> void run_workers(int n, F&& f) {
   std::vector<std::thread> ts;
-  for (int w = 1; w < n; ++w) ts.emplace_back([&f, w] { f(w); });
+  for (int w = 1; w < n; ++w)
+    ts.emplace_back([&f, w] { f(w); });
   f(0);
-  for (auto& t : ts) t.join();
+  for (auto& t : ts)
+    t.join();
 }
 
 } // namespace
@@ -44,13 +47,14 @@ RenderResult render_scene(const Scene& scene, int threads) {
   std::vector<ProjectedVertex> pv(scene.vertices.size());
   run_workers(threads, [&](int w) {
     const std::size_t n = pv.size(), lo = n * w / threads, hi = n * (w + 1) / threads;
-    for (std::size_t i = lo; i < hi; ++i) pv[i] = nr.project(scene.vertices[i], tc[w]);
+    for (std::size_t i = lo; i < hi; ++i)
+      pv[i] = nr.project(scene.vertices[i], tc[w]);
   });
 
   // 2. Triangles in chunks: set-up split by triangle ranges, rasterisation split by row bands.
   const bool textured = scene.textured();
-  const int band_h = threads == 1 ? std::max(1, scene.height)
-                                  : std::max(4, scene.height / (threads * 8));
+  const int band_h =
+      threads == 1 ? std::max(1, scene.height) : std::max(4, scene.height / (threads * 8));
   const int bands = (scene.height + band_h - 1) / band_h;
   constexpr std::size_t kChunk = 1 << 16;
   std::vector<TriangleBatch> batches(threads);
@@ -65,14 +69,16 @@ RenderResult render_scene(const Scene& scene, int threads) {
         const ProjectedVertex* p[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
         const glm::vec2* uv[3] = {nullptr, nullptr, nullptr};
         if (textured)
-          for (int k = 0; k < 3; ++k) uv[k] = &scene.uvs[t.v[k]];
+          for (int k = 0; k < 3; ++k)
+            uv[k] = &scene.uvs[t.v[k]];
         nr.setup(std::uint32_t(i), t, p, textured ? uv : nullptr, b, tc[w]);
       }
     });
     std::atomic<int> next{0};
     run_workers(threads, [&](int w) {
       for (int band; (band = next.fetch_add(1)) < bands;) {
-        const RowSet rows = RowSet::band(band * band_h, std::min(scene.height, (band + 1) * band_h));
+        const RowSet rows =
+            RowSet::band(band * band_h, std::min(scene.height, (band + 1) * band_h));
         for (const auto& b : batches)
           for (const auto& t : b.tris)
             if (t.ymax >= rows.begin && t.ymin < rows.end)
@@ -80,11 +86,11 @@ RenderResult render_scene(const Scene& scene, int threads) {
       }
     });
   }
-  for (const auto& c : tc) res.counters += c;
+  for (const auto& c : tc)
+    res.counters += c;
   res.counters.pixels_cleared = std::uint64_t(scene.width) * scene.height;
   res.counters.pixels_final = res.image.covered();
-  res.wall_time_s =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  res.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }
 

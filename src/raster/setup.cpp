@@ -12,7 +12,9 @@ inline std::int64_t floor_div(std::int64_t a, std::int64_t b) { // b > 0
   std::int64_t q = a / b;
   return (a % b != 0 && a < 0) ? q - 1 : q;
 }
-inline std::int64_t ceil_div(std::int64_t a, std::int64_t b) { return -floor_div(-a, b); } // b > 0
+inline std::int64_t ceil_div(std::int64_t a, std::int64_t b) {
+  return -floor_div(-a, b);
+} // b > 0
 
 struct SnapVertex {
   std::int64_t X, Y; // fixed point
@@ -37,7 +39,8 @@ AttrPlane make_plane(const SnapVertex* s, double a0v, double a1v, double a2v, do
 void emit(const SnapVertex* s, const SetupInput& in, bool textured, int width, int height,
           TriangleBatch& out, Counters& c) {
   SnapVertex v[3] = {s[0], s[1], s[2]};
-  std::int64_t area2 = (v[1].X - v[0].X) * (v[2].Y - v[0].Y) - (v[2].X - v[0].X) * (v[1].Y - v[0].Y);
+  std::int64_t area2 =
+      (v[1].X - v[0].X) * (v[2].Y - v[0].Y) - (v[2].X - v[0].X) * (v[1].Y - v[0].Y);
   if (area2 == 0) {
     ++c.triangles_culled;
     return;
@@ -97,7 +100,8 @@ SnapVertex snap(const ClipVertex& cv, int width, int height) {
   s.Y = std::llround(sy * kSub);
   s.z = cv.a[2] * invw * 0.5 + 0.5;
   s.invw = invw;
-  for (int i = 0; i < 5; ++i) s.attr[i] = cv.a[4 + i];
+  for (int i = 0; i < 5; ++i)
+    s.attr[i] = cv.a[4 + i];
   return s;
 }
 
@@ -130,8 +134,10 @@ void setup_triangle(const SetupInput& in, int width, int height, bool cull_back,
   poly.n = 3;
   for (int i = 0; i < 3; ++i) {
     auto& a = poly.v[i].a;
-    for (int k = 0; k < 4; ++k) a[k] = in.v[i]->clip[k];
-    for (int k = 0; k < 3; ++k) a[4 + k] = in.v[i]->light[k];
+    for (int k = 0; k < 4; ++k)
+      a[k] = in.v[i]->clip[k];
+    for (int k = 0; k < 3; ++k)
+      a[4 + k] = in.v[i]->light[k];
     a[7] = textured ? in.uv[i]->x : 0.0;
     a[8] = textured ? in.uv[i]->y : 0.0;
   }
@@ -143,14 +149,16 @@ void setup_triangle(const SetupInput& in, int width, int height, bool cull_back,
   if (cr == kClipCut) ++c.triangles_clipped;
 
   SnapVertex s[kClipMaxVerts];
-  for (int i = 0; i < poly.n; ++i) s[i] = snap(poly.v[i], width, height);
+  for (int i = 0; i < poly.n; ++i)
+    s[i] = snap(poly.v[i], width, height);
 
   if (cull_back) {
     // Facing is decided on the whole (clipped) polygon: y points down on screen, so a
     // counter-clockwise (front-facing) polygon has a negative signed area here.
     std::int64_t area2 = 0;
     for (int i = 1; i + 1 < poly.n; ++i)
-      area2 += (s[i].X - s[0].X) * (s[i + 1].Y - s[0].Y) - (s[i + 1].X - s[0].X) * (s[i].Y - s[0].Y);
+      area2 +=
+          (s[i].X - s[0].X) * (s[i + 1].Y - s[0].Y) - (s[i + 1].X - s[0].X) * (s[i].Y - s[0].Y);
     if (area2 >= 0) {
       ++c.triangles_culled;
       return;

@@ -31,15 +31,15 @@ struct TexPlanes {
 };
 
 struct ScreenTriangle {
-  std::uint32_t id = 0;       // global triangle id: the depth tie-break (lower wins)
+  std::uint32_t id = 0; // global triangle id: the depth tie-break (lower wins)
   std::uint32_t material = 0;
-  std::int32_t tex = -1;      // index into TriangleBatch::tex, -1 when untextured
-  int ymin = 0, ymax = -1;    // rows whose centre lies inside the vertical extent, clamped
+  std::int32_t tex = -1;   // index into TriangleBatch::tex, -1 when untextured
+  int ymin = 0, ymax = -1; // rows whose centre lies inside the vertical extent, clamped
   // Edge i: inside iff A*px + B*py + C - bias >= 0 at the fixed-point pixel centre (px, py).
   std::int64_t A[3], B[3], C[3];
-  std::int64_t bias[3];       // 0 on top/left edges, 1 elsewhere (the top-left rule)
-  AttrPlane z;                // window depth in [0, 1]
-  AttrPlane r, g, b;          // Gouraud light (material colour applied per fragment)
+  std::int64_t bias[3]; // 0 on top/left edges, 1 elsewhere (the top-left rule)
+  AttrPlane z;          // window depth in [0, 1]
+  AttrPlane r, g, b;    // Gouraud light (material colour applied per fragment)
 
   // Inclusive span of pixel columns of row y inside the triangle, clamped to [0, width).
   // Returns false when the row holds no pixel of the triangle.
@@ -62,7 +62,8 @@ struct SetupInput {
   std::uint32_t material;
 };
 
-// Appends the screen triangles of one scene triangle (0 if culled or off-screen, several if clipped).
+// Appends the screen triangles of one scene triangle (0 if culled or off-screen, several if
+// clipped).
 void setup_triangle(const SetupInput& in, int width, int height, bool cull_back, TriangleBatch& out,
                     Counters& counters);
 

@@ -28,7 +28,8 @@ View make_view(const Scene& scene) {
   v.height = scene.height;
   resolve_clip_planes(scene.camera, scene_bounds(scene), v.znear, v.zfar);
   const double aspect = static_cast<double>(scene.width) / std::max(1, scene.height);
-  v.view_proj = projection_matrix(scene.camera, aspect, v.znear, v.zfar) * view_matrix(scene.camera);
+  v.view_proj =
+      projection_matrix(scene.camera, aspect, v.znear, v.zfar) * view_matrix(scene.camera);
   v.ambient = scene.ambient;
   for (const auto& l : scene.lights) {
     const float len = glm::length(l.direction);

@@ -24,7 +24,7 @@ struct View {
   double znear = 0, zfar = 0;
   glm::dmat4 view_proj{1.0};
   glm::vec3 ambient{0};
-  std::vector<glm::vec3> light_dirs;   // unit vectors from the surface towards each light
+  std::vector<glm::vec3> light_dirs; // unit vectors from the surface towards each light
   std::vector<glm::vec3> light_colors;
 
   ProjectedVertex project(const Vertex& v) const;

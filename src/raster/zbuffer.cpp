@@ -25,7 +25,8 @@ void draw_triangle(const ScreenTriangle& t, const TriangleBatch& batch, const Sh
 }
 
 void draw_batch(const TriangleBatch& batch, const ShadeContext& ctx, Framebuffer& fb, Counters& c) {
-  for (const auto& t : batch.tris) draw_triangle(t, batch, ctx, fb.rows(), fb, c);
+  for (const auto& t : batch.tris)
+    draw_triangle(t, batch, ctx, fb.rows(), fb, c);
 }
 
 } // namespace zc

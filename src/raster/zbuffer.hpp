@@ -9,7 +9,8 @@
 namespace zc {
 
 // Calls f(y, x0, x1) for every non-empty span of `t` on the rows of `rows`.
-template <class F> void for_each_span(const ScreenTriangle& t, const RowSet& rows, int width, F&& f) {
+template <class F>
+void for_each_span(const ScreenTriangle& t, const RowSet& rows, int width, F&& f) {
   int y = rows.first_from(t.ymin);
   const int yend = std::min(t.ymax + 1, rows.end);
   for (; y < yend; y += rows.stride) {

@@ -1,6 +1,7 @@
 #pragma once
 // One error type for every bad input: it names the file, the line (0 when the whole file is at
-// fault) and the reason, and renders as the single line the CLI prints before exiting with status 2.
+// fault) and the reason, and renders as the single line the CLI prints before exiting with
+// status 2.
 #include <stdexcept>
 #include <string>
 
