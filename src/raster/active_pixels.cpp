@@ -1,0 +1,198 @@
+#include "raster/active_pixels.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <stdexcept>
+
+#include "raster/zbuffer.hpp"
+
+namespace zc {
+
+SpanLists build_span_lists(const TriangleBatch& batch, int width, int height, Counters& c) {
+  SpanLists L;
+  L.height = height;
+  L.row_begin.assign(std::size_t(height) + 1, 0);
+  // Two passes (count, then fill) give every scanline's list one contiguous block.
+  std::vector<std::uint32_t> count(height, 0);
+  for (const auto& t : batch.tris)
+    for_each_span(t, RowSet::all(height), width, [&](int y, int, int) { ++count[y]; });
+  for (int y = 0; y < height; ++y)
+    L.row_begin[y + 1] = L.row_begin[y] + count[y];
+  L.spans.resize(L.row_begin[height]);
+  std::vector<std::uint32_t> fill(L.row_begin.begin(), L.row_begin.end() - 1);
+  for (std::uint32_t i = 0; i < batch.tris.size(); ++i)
+    for_each_span(batch.tris[i], RowSet::all(height), width, [&](int y, int x0, int x1) {
+      L.spans[fill[y]++] = SpanRecord{x0, x1, i};
+    });
+  c.spans += L.spans.size();
+  for (int y = 0; y < height; ++y) {
+    auto b = L.spans.begin() + L.row_begin[y], e = L.spans.begin() + L.row_begin[y + 1];
+    std::stable_sort(b, e, [&](const SpanRecord& p, const SpanRecord& q) {
+      if (p.x0 != q.x0) return p.x0 < q.x0;
+      return batch.tris[p.tri].id < batch.tris[q.tri].id;
+    });
+  }
+  return L;
+}
+
+ActivePixels zbuffer_spans(const SpanLists& L, const TriangleBatch& batch, const ShadeContext& ctx,
+                           int width, Counters& c) {
+  ActivePixels A;
+  A.width = width;
+  A.y0 = 0;
+  A.y1 = L.height;
+  A.row_begin.assign(std::size_t(L.height) + 1, 0);
+  // MSA[x] = 1 + index in the WPA of the pixel at column x; valid only if >= range (§2).
+  std::vector<std::uint32_t> msa(width, 0);
+  for (int y = 0; y < L.height; ++y) {
+    const std::uint32_t range = std::uint32_t(A.pixels.size()) + 1;
+    int maxx = -1; // rightmost column produced so far on this scanline
+    for (std::uint32_t s = L.row_begin[y]; s < L.row_begin[y + 1]; ++s) {
+      const SpanRecord& sp = L.spans[s];
+      const ScreenTriangle& t = batch.tris[sp.tri];
+      const RowShader rs(t, batch, ctx, y);
+      c.pixels_generated += std::uint64_t(sp.x1 - sp.x0 + 1);
+      // First segment: columns already produced on this scanline (contiguous, since spans come
+      // sorted by x_min): depth comparisons.
+      const int seg_end = std::min(sp.x1, maxx);
+      for (int x = sp.x0; x <= seg_end; ++x) {
+        WinningPixel& w = A.pixels[msa[x] - 1];
+        const float z = rs.depth(x);
+        ++c.pixels_tested;
+        if (in_front(z, t.id, w.z, w.id)) {
+          w.z = z;
+          w.id = t.id;
+          rs.color(x, w.rgb, c);
+          ++c.pixels_written;
+        }
+      }
+      // Second segment: new columns, appended to the WPA without comparison.
+      for (int x = std::max(sp.x0, maxx + 1); x <= sp.x1; ++x) {
+        WinningPixel w;
+        w.z = rs.depth(x);
+        w.id = t.id;
+        w.x = std::uint16_t(x);
+        rs.color(x, w.rgb, c);
+        A.pixels.push_back(w);
+        msa[x] = std::uint32_t(A.pixels.size()); // >= range by construction
+        ++c.pixels_written;
+      }
+      maxx = std::max(maxx, sp.x1);
+    }
+    (void)range; // the range test is implied by the segment split (see header)
+    A.row_begin[y + 1] = std::uint32_t(A.pixels.size());
+  }
+  return A;
+}
+
+ActivePixels slice_rows(const ActivePixels& a, int y0, int y1) {
+  y0 = std::max(y0, a.y0);
+  y1 = std::max(y0, std::min(y1, a.y1));
+  ActivePixels r;
+  r.width = a.width;
+  r.y0 = y0;
+  r.y1 = y1;
+  const std::uint32_t b = a.row_begin[y0 - a.y0], e = a.row_begin[y1 - a.y0];
+  r.pixels.assign(a.pixels.begin() + b, a.pixels.begin() + e);
+  r.row_begin.resize(std::size_t(y1 - y0) + 1);
+  for (int y = y0; y <= y1; ++y)
+    r.row_begin[y - y0] = a.row_begin[y - a.y0] - b;
+  return r;
+}
+
+ActivePixels merge_active(const ActivePixels& a, const ActivePixels& b, Counters& c) {
+  if (a.y0 != b.y0 || a.y1 != b.y1 || a.width != b.width)
+    throw std::logic_error("merge_active: pixel sets cover different rows");
+  ActivePixels r;
+  r.width = a.width;
+  r.y0 = a.y0;
+  r.y1 = a.y1;
+  r.row_begin.assign(a.row_begin.size(), 0);
+  r.pixels.reserve(a.pixels.size() + b.pixels.size());
+  for (int y = a.y0; y < a.y1; ++y) {
+    std::uint32_t i = a.row_begin[y - a.y0], ie = a.row_begin[y - a.y0 + 1];
+    std::uint32_t j = b.row_begin[y - b.y0], je = b.row_begin[y - b.y0 + 1];
+    while (i < ie || j < je) {
+      if (j == je || (i < ie && a.pixels[i].x < b.pixels[j].x)) {
+        r.pixels.push_back(a.pixels[i++]);
+      } else if (i == ie || b.pixels[j].x < a.pixels[i].x) {
+        r.pixels.push_back(b.pixels[j++]);
+      } else {
+        ++c.merge_ops;
+        const WinningPixel& p = a.pixels[i];
+        const WinningPixel& q = b.pixels[j];
+        r.pixels.push_back(in_front(q.z, q.id, p.z, p.id) ? q : p);
+        ++i;
+        ++j;
+      }
+    }
+    r.row_begin[y - a.y0 + 1] = std::uint32_t(r.pixels.size());
+  }
+  return r;
+}
+
+void scatter_active(const ActivePixels& a, Framebuffer& fb) {
+  for (int y = a.y0; y < a.y1; ++y)
+    for (std::uint32_t k = a.row_begin[y - a.y0]; k < a.row_begin[y - a.y0 + 1]; ++k) {
+      const WinningPixel& p = a.pixels[k];
+      const std::size_t i = fb.index(p.x, y);
+      fb.depth()[i] = p.z;
+      fb.ids()[i] = p.id;
+      std::memcpy(&fb.rgb()[3 * i], p.rgb, 3);
+    }
+}
+
+namespace {
+template <class T> void put(std::vector<std::uint8_t>& out, const T& v) {
+  const auto* p = reinterpret_cast<const std::uint8_t*>(&v);
+  out.insert(out.end(), p, p + sizeof(T));
+}
+template <class T> T get(const std::uint8_t*& p, const std::uint8_t* end) {
+  if (std::size_t(end - p) < sizeof(T)) throw std::runtime_error("active pixels: truncated");
+  T v;
+  std::memcpy(&v, p, sizeof(T));
+  p += sizeof(T);
+  return v;
+}
+} // namespace
+
+// Layout: int32 width, y0, y1; uint32 count per row; then per pixel x(2) rgb(3) z(4) id(4).
+std::vector<std::uint8_t> serialize(const ActivePixels& a) {
+  std::vector<std::uint8_t> out;
+  out.reserve(12 + 4 * std::size_t(a.y1 - a.y0) + kWirePixelBytes * a.pixels.size());
+  put(out, std::int32_t(a.width));
+  put(out, std::int32_t(a.y0));
+  put(out, std::int32_t(a.y1));
+  for (int y = a.y0; y < a.y1; ++y)
+    put(out, a.row_count(y));
+  for (const auto& p : a.pixels) {
+    put(out, p.x);
+    out.insert(out.end(), p.rgb, p.rgb + 3);
+    put(out, p.z);
+    put(out, p.id);
+  }
+  return out;
+}
+
+ActivePixels deserialize_active(const std::uint8_t* p, std::size_t size) {
+  const std::uint8_t* end = p + size;
+  ActivePixels a;
+  a.width = get<std::int32_t>(p, end);
+  a.y0 = get<std::int32_t>(p, end);
+  a.y1 = get<std::int32_t>(p, end);
+  if (a.y1 < a.y0 || a.width < 0) throw std::runtime_error("active pixels: bad header");
+  a.row_begin.assign(std::size_t(a.y1 - a.y0) + 1, 0);
+  for (int y = a.y0; y < a.y1; ++y)
+    a.row_begin[y - a.y0 + 1] = a.row_begin[y - a.y0] + get<std::uint32_t>(p, end);
+  a.pixels.resize(a.row_begin.back());
+  for (auto& px : a.pixels) {
+    px.x = get<std::uint16_t>(p, end);
+    for (int k = 0; k < 3; ++k)
+      px.rgb[k] = get<std::uint8_t>(p, end);
+    px.z = get<float>(p, end);
+    px.id = get<std::uint32_t>(p, end);
+  }
+  return a;
+}
+
+} // namespace zc

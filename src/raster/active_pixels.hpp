@@ -1,0 +1,78 @@
+#pragma once
+// Kurc, Aykanat, Ozguc §2: the modified scanline z-buffer. Spans go into per-scanline lists
+// sorted by x_min (span list creation); then, scanline by scanline, spans are z-buffered through
+// the Modified Scanline Array (MSA, one entry per column holding an index into the WPA) into the
+// Winning Pixel Array (WPA), which keeps only the local foremost pixels, consecutively and in
+// increasing x within each scanline. Because spans arrive sorted by x_min, a span splits into a
+// first segment that overlaps pixels already produced on this scanline (depth comparisons) and a
+// second segment of new pixels appended without comparison; the MSA is never re-initialised
+// (entries below the scanline's "range" belong to earlier scanlines and are simply ignored).
+#include <cstdint>
+#include <vector>
+
+#include "raster/counters.hpp"
+#include "raster/framebuffer.hpp"
+#include "raster/setup.hpp"
+#include "raster/shade.hpp"
+
+namespace zc {
+
+// One winning pixel: its column, depth, triangle id (the tie-break) and colour. On the wire it
+// takes kWirePixelBytes (x 2, rgb 3, z 4, id 4).
+struct WinningPixel {
+  float z;
+  std::uint32_t id;
+  std::uint16_t x;
+  std::uint8_t rgb[3];
+};
+constexpr std::size_t kWirePixelBytes = 13;
+
+// A span record of the scanline span lists: its extent and the triangle that shades it.
+struct SpanRecord {
+  std::int32_t x0, x1;
+  std::uint32_t tri; // index into the TriangleBatch
+};
+
+// Scanline span lists: spans of every local triangle, bucketed by scanline, each bucket sorted by
+// increasing x_min (ties: increasing triangle id, then creation order), as §2 prescribes.
+struct SpanLists {
+  int height = 0;
+  std::vector<std::uint32_t> row_begin; // height+1 offsets into spans
+  std::vector<SpanRecord> spans;
+  std::size_t bytes() const { return spans.size() * sizeof(SpanRecord) + row_begin.size() * 4; }
+};
+
+SpanLists build_span_lists(const TriangleBatch& batch, int width, int height, Counters& c);
+
+// The local foremost pixels of a set of scanlines: rows [y0, y1), each row's pixels consecutive
+// and sorted by x.
+struct ActivePixels {
+  int width = 0;
+  int y0 = 0, y1 = 0;
+  std::vector<std::uint32_t> row_begin; // (y1-y0)+1 offsets into pixels
+  std::vector<WinningPixel> pixels;
+
+  std::size_t count() const { return pixels.size(); }
+  std::uint32_t row_count(int y) const { return row_begin[y - y0 + 1] - row_begin[y - y0]; }
+  std::size_t bytes() const { return pixels.size() * sizeof(WinningPixel) + row_begin.size() * 4; }
+};
+
+// The modified scanline z-buffer over all rows of the span lists; `msa` scratch is width entries.
+ActivePixels zbuffer_spans(const SpanLists& lists, const TriangleBatch& batch,
+                           const ShadeContext& ctx, int width, Counters& c);
+
+// Extracts rows [y0, y1) (a copy; used to split pixel sets by screen region).
+ActivePixels slice_rows(const ActivePixels& a, int y0, int y1);
+
+// Merges two pixel sets over the same rows: per row a merge of two x-sorted lists, the nearer
+// pixel (depth, then lower id) winning at equal x. c.merge_ops counts the depth comparisons.
+ActivePixels merge_active(const ActivePixels& a, const ActivePixels& b, Counters& c);
+
+// Writes a pixel set into a frame buffer holding (at least) its rows, without comparisons.
+void scatter_active(const ActivePixels& a, Framebuffer& fb);
+
+// Wire format: the rows and their pixels, as they travel in a message.
+std::vector<std::uint8_t> serialize(const ActivePixels& a);
+ActivePixels deserialize_active(const std::uint8_t* data, std::size_t size);
+
+} // namespace zc
