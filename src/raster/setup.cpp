@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "geometry/clip.hpp"
 
@@ -124,6 +125,36 @@ bool ScreenTriangle::span(int y, int width, int& x0, int& x1) const {
   x0 = int(lo);
   x1 = int(hi);
   return true;
+}
+
+bool row_extent(const ProjectedVertex* const v[3], int width, int height, int& y0, int& y1) {
+  ClipPolygon poly;
+  poly.n = 3;
+  for (int i = 0; i < 3; ++i) {
+    for (int k = 0; k < 4; ++k)
+      poly.v[i].a[k] = v[i]->clip[k];
+    for (int k = 4; k < kClipAttrs; ++k)
+      poly.v[i].a[k] = 0;
+  }
+  // Only the outcodes are needed: clip_polygon returns before cutting when all are inside.
+  ClipPolygon probe = poly;
+  probe.n = 3;
+  const ClipResult cr = clip_polygon(probe, kGuardBand);
+  if (cr == kClipOutside) return false;
+  if (cr == kClipCut) {
+    y0 = 0;
+    y1 = height - 1;
+    return height > 0;
+  }
+  std::int64_t miny = INT64_MAX, maxy = INT64_MIN;
+  for (int i = 0; i < 3; ++i) {
+    const std::int64_t Y = snap(poly.v[i], width, height).Y;
+    miny = std::min(miny, Y);
+    maxy = std::max(maxy, Y);
+  }
+  y0 = int(std::max<std::int64_t>(0, ceil_div(miny - kSub / 2, kSub)));
+  y1 = int(std::min<std::int64_t>(height - 1, floor_div(maxy - kSub / 2, kSub)));
+  return y0 <= y1;
 }
 
 void setup_triangle(const SetupInput& in, int width, int height, bool cull_back, TriangleBatch& out,

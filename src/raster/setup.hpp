@@ -62,6 +62,11 @@ struct SetupInput {
   std::uint32_t material;
 };
 
+// Rows [y0, y1] (inclusive) a triangle can touch, from its projected vertices alone: exactly the
+// rows set-up would give when the triangle needs no clipping (same snapping), the whole screen
+// when it does (clipping only shrinks). Returns false when it certainly touches no row.
+bool row_extent(const ProjectedVertex* const v[3], int width, int height, int& y0, int& y1);
+
 // Appends the screen triangles of one scene triangle (0 if culled or off-screen, several if
 // clipped).
 void setup_triangle(const SetupInput& in, int width, int height, bool cull_back, TriangleBatch& out,
