@@ -4,22 +4,6 @@
 
 namespace zc {
 
-#define ZC_COUNTER_FIELDS(X)                                                                       \
-  X(vertices_transformed)                                                                          \
-  X(triangles_in)                                                                                  \
-  X(triangles_culled)                                                                              \
-  X(triangles_clipped)                                                                             \
-  X(triangles_setup)                                                                               \
-  X(spans)                                                                                         \
-  X(pixels_generated)                                                                              \
-  X(pixels_tested)                                                                                 \
-  X(pixels_written)                                                                                \
-  X(pixels_final)                                                                                  \
-  X(texels_fetched)                                                                                \
-  X(pixels_cleared)                                                                                \
-  X(merge_ops)                                                                                     \
-  X(bytes_packed)
-
 Counters& Counters::operator+=(const Counters& o) {
 #define ZC_ADD(f) f += o.f;
   ZC_COUNTER_FIELDS(ZC_ADD)

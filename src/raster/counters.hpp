@@ -24,6 +24,8 @@ struct Counters {
   std::uint64_t pixels_cleared = 0;       // frame/z-buffer locations initialised
   std::uint64_t merge_ops = 0;            // pixel comparisons while merging partial images
   std::uint64_t bytes_packed = 0;         // bytes copied into or out of message buffers
+  std::uint64_t triangles_estimated = 0;  // per-triangle load estimates (Charles et al. §5)
+  std::uint64_t rows_scanned = 0;         // per-row passes: prefix scans, partitions, row counts
 
   Counters& operator+=(const Counters& o);
   friend Counters operator+(Counters a, const Counters& b) { return a += b; }
@@ -32,5 +34,25 @@ struct Counters {
 };
 
 void to_json(nlohmann::json& j, const Counters& c);
+
+// Every counter field, for code that must treat them uniformly (cost tables, reports):
+// ZC_COUNTER_FIELDS(X) expands X(name) once per field, in declaration order.
+#define ZC_COUNTER_FIELDS(X)                                                                       \
+  X(vertices_transformed)                                                                          \
+  X(triangles_in)                                                                                  \
+  X(triangles_culled)                                                                              \
+  X(triangles_clipped)                                                                             \
+  X(triangles_setup)                                                                               \
+  X(spans)                                                                                         \
+  X(pixels_generated)                                                                              \
+  X(pixels_tested)                                                                                 \
+  X(pixels_written)                                                                                \
+  X(pixels_final)                                                                                  \
+  X(texels_fetched)                                                                                \
+  X(pixels_cleared)                                                                                \
+  X(merge_ops)                                                                                     \
+  X(bytes_packed)                                                                                  \
+  X(triangles_estimated)                                                                           \
+  X(rows_scanned)
 
 } // namespace zc
