@@ -1,0 +1,278 @@
+// The JSON scene format (documented in scenes/README.md): image, background, ambient, lights,
+// camera, culling, texture filter, and objects (meshes, Newell Bezier patches, Blazek's primitives)
+// with transforms, colours and seeded replication.
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "geometry/camera.hpp"
+#include "scene/bezier.hpp"
+#include "scene/colors.hpp"
+#include "scene/loaders.hpp"
+#include "scene/prng.hpp"
+#include "scene/text.hpp"
+#include "scene/input_error.hpp"
+
+namespace zc {
+
+namespace {
+
+using json = nlohmann::json;
+
+struct Ctx {
+  std::string file;
+  std::string dir;
+  [[noreturn]] void fail(const std::string& where, const std::string& why) const {
+    throw InputError(file, 0, where + ": " + why);
+  }
+  double number(const json& j, const std::string& where) const {
+    if (!j.is_number()) fail(where, "expected a number");
+    double v = j.get<double>();
+    if (!std::isfinite(v)) fail(where, "not a finite number");
+    return v;
+  }
+  long long integer(const json& j, const std::string& where, long long lo, long long hi) const {
+    if (!j.is_number()) fail(where, "expected an integer");
+    double v = j.get<double>();
+    if (!(v >= double(lo) && v <= double(hi)) || v != std::floor(v))
+      fail(where, "expected an integer in " + std::to_string(lo) + ".." + std::to_string(hi));
+    return (long long)v;
+  }
+  glm::dvec3 vec3(const json& j, const std::string& where) const {
+    if (!j.is_array() || j.size() != 3) fail(where, "expected [x, y, z]");
+    return {number(j[0], where + "[0]"), number(j[1], where + "[1]"), number(j[2], where + "[2]")};
+  }
+  std::string string(const json& j, const std::string& where) const {
+    if (!j.is_string()) fail(where, "expected a string");
+    return j.get<std::string>();
+  }
+  // [r,g,b] in 0..1, a name, or (when allowed) "random".
+  glm::vec3 color(const json& j, const std::string& where) const {
+    if (j.is_string()) {
+      auto c = named_color(j.get<std::string>());
+      if (!c) fail(where, "unknown colour '" + j.get<std::string>() + "'");
+      return *c;
+    }
+    glm::dvec3 c = vec3(j, where);
+    for (int k = 0; k < 3; ++k)
+      if (c[k] < 0 || c[k] > 1) fail(where, "colour components must be in 0..1");
+    return glm::vec3(c);
+  }
+};
+
+void check_keys(const Ctx& cx, const json& j, const std::string& where,
+                std::initializer_list<const char*> allowed) {
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    bool ok = false;
+    for (const char* a : allowed) ok |= it.key() == a;
+    if (!ok) cx.fail(where, "unknown key '" + it.key() + "'");
+  }
+}
+
+ObjectTransform parse_transform(const Ctx& cx, const json& j, const std::string& where) {
+  ObjectTransform xf;
+  if (!j.is_object()) cx.fail(where, "expected an object");
+  check_keys(cx, j, where, {"translate", "rotate", "scale", "matrix"});
+  if (j.contains("translate")) xf.translate = cx.vec3(j["translate"], where + ".translate");
+  if (j.contains("rotate")) xf.rotate_deg = cx.vec3(j["rotate"], where + ".rotate");
+  if (j.contains("scale")) {
+    const json& s = j["scale"];
+    if (s.is_number()) xf.scale = glm::dvec3(cx.number(s, where + ".scale"));
+    else xf.scale = cx.vec3(s, where + ".scale");
+  }
+  if (j.contains("matrix")) {
+    if (j.contains("rotate") || j.contains("scale")) cx.fail(where, "matrix excludes rotate/scale");
+    const json& m = j["matrix"];
+    if (!m.is_array() || m.size() != 4) cx.fail(where + ".matrix", "expected 4 rows of 4 numbers");
+    for (int r = 0; r < 4; ++r) {
+      if (!m[std::size_t(r)].is_array() || m[std::size_t(r)].size() != 4)
+        cx.fail(where + ".matrix", "expected 4 rows of 4 numbers");
+      for (int c = 0; c < 4; ++c) // rows as written; glm is column-major
+        xf.matrix[c][r] = cx.number(m[std::size_t(r)][std::size_t(c)], where + ".matrix");
+    }
+    xf.has_matrix = true;
+  }
+  return xf;
+}
+
+void parse_object(Scene& scene, const Ctx& cx, const json& j, std::size_t index) {
+  const std::string where = "objects[" + std::to_string(index) + "]";
+  json o = j.is_string() ? json{{"type", j}} : j;
+  if (!o.is_object()) cx.fail(where, "expected an object or a type name");
+  check_keys(cx, o, where,
+             {"type", "file", "level", "recursion", "slices", "radii", "transform", "color",
+              "material", "count", "seed", "placement", "name", "flip_winding"});
+  if (!o.contains("type")) cx.fail(where, "missing 'type'");
+  ObjectSpec spec;
+  spec.kind = cx.string(o["type"], where + ".type");
+  const std::string& k = spec.kind;
+  if (k != "mesh" && k != "bezier" && k != "sphere" && k != "spheroid" && k != "cube" &&
+      k != "cone" && k != "cylinder")
+    cx.fail(where + ".type", "unknown object type '" + k + "'");
+  if (k == "mesh" || k == "bezier") {
+    if (!o.contains("file")) cx.fail(where, "'" + k + "' needs a 'file'");
+    spec.file = text::join_path(cx.dir, cx.string(o["file"], where + ".file"));
+  }
+  if (o.contains("level")) spec.level = int(cx.integer(o["level"], where + ".level", 1, kMaxBezierLevel));
+  if (o.contains("recursion"))
+    spec.recursion = int(cx.integer(o["recursion"], where + ".recursion", 0, kMaxRecursion));
+  if (o.contains("slices")) spec.slices = int(cx.integer(o["slices"], where + ".slices", 3, kMaxSlices));
+  if (o.contains("radii")) {
+    spec.radii = cx.vec3(o["radii"], where + ".radii");
+    for (int q = 0; q < 3; ++q)
+      if (!(spec.radii[q] > 0)) cx.fail(where + ".radii", "radii must be positive");
+  }
+  if (o.contains("transform")) spec.xf = parse_transform(cx, o["transform"], where + ".transform");
+
+  bool random_colour = false, has_color = false;
+  glm::vec3 color(0.8f);
+  if (o.contains("color") && o.contains("material")) cx.fail(where, "give 'color' or 'material', not both");
+  if (o.contains("color")) {
+    has_color = true;
+    if (o["color"].is_string() && o["color"].get<std::string>() == "random") random_colour = true;
+    else color = cx.color(o["color"], where + ".color");
+  }
+  if (o.contains("material")) {
+    const json& m = o["material"];
+    if (!m.is_object()) cx.fail(where + ".material", "expected {\"kd\": [r, g, b]}");
+    check_keys(cx, m, where + ".material", {"kd", "name"});
+    if (!m.contains("kd")) cx.fail(where + ".material", "missing 'kd'");
+    color = cx.color(m["kd"], where + ".material.kd");
+    has_color = true;
+  }
+
+  const long long count = o.contains("count") ? cx.integer(o["count"], where + ".count", 1, 1 << 20) : 1;
+  const std::uint64_t seed =
+      o.contains("seed") ? std::uint64_t(cx.integer(o["seed"], where + ".seed", 0, (1ll << 53))) : 1;
+  glm::dvec3 lo(-1), hi(1);
+  const bool placed = o.contains("placement");
+  if (placed) {
+    const json& p = o["placement"];
+    if (!p.is_object()) cx.fail(where + ".placement", "expected {\"min\": [..], \"max\": [..]}");
+    check_keys(cx, p, where + ".placement", {"min", "max"});
+    if (p.contains("min")) lo = cx.vec3(p["min"], where + ".placement.min");
+    if (p.contains("max")) hi = cx.vec3(p["max"], where + ".placement.max");
+    for (int q = 0; q < 3; ++q)
+      if (lo[q] > hi[q]) cx.fail(where + ".placement", "min must not exceed max");
+  }
+  bool flip = false;
+  if (o.contains("flip_winding")) {
+    if (!o["flip_winding"].is_boolean()) cx.fail(where + ".flip_winding", "expected true or false");
+    if (k != "mesh") cx.fail(where + ".flip_winding", "only for meshes");
+    flip = o["flip_winding"].get<bool>();
+  }
+  // One random stream per object entry: x, y, z (when placed) then the colour (when random).
+  SplitMix64 g(mix_seed(seed, index));
+  const glm::dvec3 base = spec.xf.translate;
+  for (long long c = 0; c < count; ++c) {
+    ObjectSpec copy = spec;
+    if (placed || count > 1)
+      copy.xf.translate = base + glm::dvec3(g.coord(lo.x, hi.x), g.coord(lo.y, hi.y), g.coord(lo.z, hi.z));
+    glm::vec3 col = random_colour ? random_color(g) : color;
+    copy.color = col;
+    copy.material = has_color ? color_material(scene, col) : 0;
+    if (!has_color) copy.color = scene.materials[0].kd;
+    if (k == "mesh") append_obj(scene, copy.file, copy.xf, copy.material, flip);
+    else add_object(scene, copy);
+  }
+}
+
+} // namespace
+
+void load_json_scene(Scene& scene, const std::string& path) {
+  const std::string src = text::read_file(path);
+  Ctx cx{path, text::directory_of(path)};
+  json j;
+  try {
+    j = json::parse(src);
+  } catch (const json::parse_error& e) {
+    int line = 1;
+    for (std::size_t i = 0; i + 1 < e.byte && i < src.size(); ++i) line += src[i] == '\n';
+    std::string why = e.what();
+    if (auto p = why.find("] "); p != std::string::npos) why = why.substr(p + 2);
+    if (auto p = why.find(": "); p != std::string::npos && why.rfind("parse error", 0) == 0)
+      why = "JSON " + why.substr(p + 2);
+    throw InputError(path, line, why);
+  }
+  if (!j.is_object()) cx.fail("scene", "expected a JSON object");
+  check_keys(cx, j, "scene",
+             {"image", "background", "ambient", "lights", "camera", "cull", "texture_filter",
+              "objects", "comment", "description"});
+  if (j.contains("image")) {
+    const json& im = j["image"];
+    if (!im.is_object()) cx.fail("image", "expected {\"width\": W, \"height\": H}");
+    check_keys(cx, im, "image", {"width", "height"});
+    if (im.contains("width")) scene.width = int(cx.integer(im["width"], "image.width", 0, 1ll << 30));
+    if (im.contains("height")) scene.height = int(cx.integer(im["height"], "image.height", 0, 1ll << 30));
+  }
+  if (j.contains("background")) scene.background = cx.color(j["background"], "background");
+  if (j.contains("ambient")) {
+    if (j["ambient"].is_number()) {
+      double a = cx.number(j["ambient"], "ambient");
+      if (a < 0 || a > 1) cx.fail("ambient", "must be in 0..1");
+      scene.ambient = glm::vec3(float(a));
+    } else {
+      scene.ambient = cx.color(j["ambient"], "ambient");
+    }
+  }
+  if (j.contains("lights")) {
+    if (!j["lights"].is_array()) cx.fail("lights", "expected an array");
+    for (std::size_t i = 0; i < j["lights"].size(); ++i) {
+      const json& l = j["lights"][i];
+      const std::string w = "lights[" + std::to_string(i) + "]";
+      if (!l.is_object()) cx.fail(w, "expected {\"direction\": [..], \"color\": [..]}");
+      check_keys(cx, l, w, {"direction", "color"});
+      DirectionalLight dl;
+      if (!l.contains("direction")) cx.fail(w, "missing 'direction'");
+      glm::dvec3 d = cx.vec3(l["direction"], w + ".direction");
+      if (glm::length(d) == 0) cx.fail(w + ".direction", "must not be zero");
+      dl.direction = glm::vec3(glm::normalize(d));
+      if (l.contains("color")) dl.color = cx.color(l["color"], w + ".color");
+      scene.lights.push_back(dl);
+    }
+  }
+  if (!j.contains("lights")) { // the default: one white light from the upper left
+    DirectionalLight dl;
+    dl.direction = glm::normalize(glm::vec3(1, -1, -1));
+    scene.lights.push_back(dl);
+  }
+  if (j.contains("cull")) {
+    std::string c = cx.string(j["cull"], "cull");
+    if (c == "none") scene.cull = CullMode::None;
+    else if (c == "back") scene.cull = CullMode::Back;
+    else cx.fail("cull", "expected \"none\" or \"back\"");
+  }
+  if (j.contains("texture_filter")) {
+    std::string f = cx.string(j["texture_filter"], "texture_filter");
+    if (f == "nearest") scene.filter = TextureFilter::Nearest;
+    else if (f == "bilinear") scene.filter = TextureFilter::Bilinear;
+    else cx.fail("texture_filter", "expected \"nearest\" or \"bilinear\"");
+  }
+  if (!j.contains("objects") || !j["objects"].is_array() || j["objects"].empty())
+    cx.fail("objects", "expected a non-empty array");
+  for (std::size_t i = 0; i < j["objects"].size(); ++i) parse_object(scene, cx, j["objects"][i], i);
+
+  if (j.contains("camera")) {
+    const json& c = j["camera"];
+    if (!c.is_object()) cx.fail("camera", "expected an object");
+    check_keys(cx, c, "camera", {"eye", "target", "up", "fov", "near", "far"});
+    Camera cam;
+    if (c.contains("eye")) cam.eye = cx.vec3(c["eye"], "camera.eye");
+    if (c.contains("target")) cam.target = cx.vec3(c["target"], "camera.target");
+    if (c.contains("up")) cam.up = cx.vec3(c["up"], "camera.up");
+    if (c.contains("fov")) cam.fovy_deg = cx.number(c["fov"], "camera.fov");
+    if (c.contains("near")) cam.znear = cx.number(c["near"], "camera.near");
+    if (c.contains("far")) cam.zfar = cx.number(c["far"], "camera.far");
+    if (!(cam.fovy_deg > 0 && cam.fovy_deg < 180)) cx.fail("camera.fov", "must be in (0, 180) degrees");
+    if (glm::length(cam.target - cam.eye) == 0) cx.fail("camera", "eye and target coincide");
+    if (glm::length(glm::cross(cam.target - cam.eye, cam.up)) == 0)
+      cx.fail("camera.up", "parallel to the view direction");
+    if (cam.znear < 0 || cam.zfar < 0 || (cam.znear > 0 && cam.zfar > 0 && cam.zfar <= cam.znear))
+      cx.fail("camera", "need 0 < near < far");
+    scene.camera = cam;
+  } else {
+    scene.camera = framing_camera(scene_bounds(scene));
+  }
+}
+
+} // namespace zc
