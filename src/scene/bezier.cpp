@@ -4,8 +4,8 @@
 #include <map>
 #include <mutex>
 
-#include "scene/text.hpp"
 #include "scene/input_error.hpp"
+#include "scene/text.hpp"
 
 namespace zc {
 
@@ -24,7 +24,8 @@ struct Lines {
         return l;
       }
     }
-    throw InputError(path, int(lines.size()), std::string("truncated file: expected ") + what);
+    const int last = int(lines.size()) - (!lines.empty() && lines.back().empty() ? 1 : 0);
+    throw InputError(path, last, std::string("truncated file: expected ") + what);
   }
 };
 
@@ -45,7 +46,8 @@ long long count_line(Lines& in, const char* what, long long max) {
   auto l = in.get(ln, what);
   auto v = text::to_int(l);
   if (!v || *v < 1 || *v > max)
-    throw InputError(in.path, ln, std::string("expected ") + what + ", got '" + std::string(l) + "'");
+    throw InputError(in.path, ln,
+                     std::string("expected ") + what + ", got '" + std::string(l) + "'");
   return *v;
 }
 
@@ -57,7 +59,9 @@ glm::dvec3 point_line(Lines& in, bool commas) {
   glm::dvec3 p;
   for (int k = 0; k < 3; ++k) {
     auto v = text::to_double(tok[std::size_t(k)]);
-    if (!v) throw InputError(in.path, ln, "not a finite number: '" + std::string(tok[std::size_t(k)]) + "'");
+    if (!v)
+      throw InputError(in.path, ln,
+                       "not a finite number: '" + std::string(tok[std::size_t(k)]) + "'");
     p[k] = *v;
   }
   return p;
@@ -76,7 +80,8 @@ std::vector<BezierPatch> parse(const std::string& path) {
       auto tok = text::split(l);
       if (tok.size() != 2 || tok[0] != "3" || tok[1] != "3")
         throw InputError(path, ln, "expected patch degrees '3 3' (only bicubic patches)");
-      for (int k = 0; k < 16; ++k) pa.p[k / 4][k % 4] = point_line(in, false);
+      for (int k = 0; k < 16; ++k)
+        pa.p[k / 4][k % 4] = point_line(in, false);
     }
   } else {
     std::vector<std::array<long long, 16>> idx(patches.size());
@@ -87,14 +92,16 @@ std::vector<BezierPatch> parse(const std::string& path) {
       if (tok.size() != 16) throw InputError(path, ln, "expected 16 control-point indices");
       for (int k = 0; k < 16; ++k) {
         auto v = text::to_int(tok[std::size_t(k)]);
-        if (!v) throw InputError(path, ln, "not an index: '" + std::string(tok[std::size_t(k)]) + "'");
+        if (!v)
+          throw InputError(path, ln, "not an index: '" + std::string(tok[std::size_t(k)]) + "'");
         idx[q][std::size_t(k)] = *v;
       }
       idx_line[q] = ln;
     }
     const long long m = count_line(in, "the control-point count", 100000000);
     std::vector<glm::dvec3> pts(static_cast<std::size_t>(m));
-    for (auto& p : pts) p = point_line(in, true);
+    for (auto& p : pts)
+      p = point_line(in, true);
     for (std::size_t q = 0; q < patches.size(); ++q)
       for (int k = 0; k < 16; ++k) {
         long long i = idx[q][std::size_t(k)];
@@ -187,7 +194,8 @@ LocalMesh tessellate_patches(const std::vector<BezierPatch>& patches, int level)
   m.normals.reserve(patches.size() * n1 * n1);
   m.triangles.reserve(patches.size() * std::size_t(level) * std::size_t(level) * 2);
   std::vector<Basis> bs(n1);
-  for (int k = 0; k <= level; ++k) bs[std::size_t(k)] = basis(k, level);
+  for (int k = 0; k <= level; ++k)
+    bs[std::size_t(k)] = basis(k, level);
   for (const auto& pa : patches) {
     const std::uint32_t base = std::uint32_t(m.positions.size());
     for (int i = 0; i <= level; ++i)

@@ -2,8 +2,8 @@
 // Newell's bicubic Bezier patches (the Utah teapot): reading the two file forms and tessellating
 // them into a triangle grid with analytic normals.
 //   teaset form (ftp.funet.fi "teaset"): a line with the patch count, one line of 16
-//     comma-separated 1-based control-point indices per patch, a line with the point count, then one
-//     "x,y,z" line per point.
+//     comma-separated 1-based control-point indices per patch, a line with the point count, then
+//     one "x,y,z" line per point.
 //   .bpt form: a line with the patch count, then per patch a line "3 3" and 16 lines "x y z".
 #include <memory>
 #include <string>

@@ -2,16 +2,17 @@
 // camera, culling, texture filter, and objects (meshes, Newell Bezier patches, Blazek's primitives)
 // with transforms, colours and seeded replication.
 #include <cmath>
+#include <filesystem>
 
 #include <nlohmann/json.hpp>
 
 #include "geometry/camera.hpp"
 #include "scene/bezier.hpp"
 #include "scene/colors.hpp"
+#include "scene/input_error.hpp"
 #include "scene/loaders.hpp"
 #include "scene/prng.hpp"
 #include "scene/text.hpp"
-#include "scene/input_error.hpp"
 
 namespace zc {
 
@@ -64,7 +65,8 @@ void check_keys(const Ctx& cx, const json& j, const std::string& where,
                 std::initializer_list<const char*> allowed) {
   for (auto it = j.begin(); it != j.end(); ++it) {
     bool ok = false;
-    for (const char* a : allowed) ok |= it.key() == a;
+    for (const char* a : allowed)
+      ok |= it.key() == a;
     if (!ok) cx.fail(where, "unknown key '" + it.key() + "'");
   }
 }
@@ -77,8 +79,10 @@ ObjectTransform parse_transform(const Ctx& cx, const json& j, const std::string&
   if (j.contains("rotate")) xf.rotate_deg = cx.vec3(j["rotate"], where + ".rotate");
   if (j.contains("scale")) {
     const json& s = j["scale"];
-    if (s.is_number()) xf.scale = glm::dvec3(cx.number(s, where + ".scale"));
-    else xf.scale = cx.vec3(s, where + ".scale");
+    if (s.is_number())
+      xf.scale = glm::dvec3(cx.number(s, where + ".scale"));
+    else
+      xf.scale = cx.vec3(s, where + ".scale");
   }
   if (j.contains("matrix")) {
     if (j.contains("rotate") || j.contains("scale")) cx.fail(where, "matrix excludes rotate/scale");
@@ -112,11 +116,16 @@ void parse_object(Scene& scene, const Ctx& cx, const json& j, std::size_t index)
   if (k == "mesh" || k == "bezier") {
     if (!o.contains("file")) cx.fail(where, "'" + k + "' needs a 'file'");
     spec.file = text::join_path(cx.dir, cx.string(o["file"], where + ".file"));
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(spec.file, ec))
+      cx.fail(where + ".file", k + " file not found: " + spec.file);
   }
-  if (o.contains("level")) spec.level = int(cx.integer(o["level"], where + ".level", 1, kMaxBezierLevel));
+  if (o.contains("level"))
+    spec.level = int(cx.integer(o["level"], where + ".level", 1, kMaxBezierLevel));
   if (o.contains("recursion"))
     spec.recursion = int(cx.integer(o["recursion"], where + ".recursion", 0, kMaxRecursion));
-  if (o.contains("slices")) spec.slices = int(cx.integer(o["slices"], where + ".slices", 3, kMaxSlices));
+  if (o.contains("slices"))
+    spec.slices = int(cx.integer(o["slices"], where + ".slices", 3, kMaxSlices));
   if (o.contains("radii")) {
     spec.radii = cx.vec3(o["radii"], where + ".radii");
     for (int q = 0; q < 3; ++q)
@@ -126,11 +135,14 @@ void parse_object(Scene& scene, const Ctx& cx, const json& j, std::size_t index)
 
   bool random_colour = false, has_color = false;
   glm::vec3 color(0.8f);
-  if (o.contains("color") && o.contains("material")) cx.fail(where, "give 'color' or 'material', not both");
+  if (o.contains("color") && o.contains("material"))
+    cx.fail(where, "give 'color' or 'material', not both");
   if (o.contains("color")) {
     has_color = true;
-    if (o["color"].is_string() && o["color"].get<std::string>() == "random") random_colour = true;
-    else color = cx.color(o["color"], where + ".color");
+    if (o["color"].is_string() && o["color"].get<std::string>() == "random")
+      random_colour = true;
+    else
+      color = cx.color(o["color"], where + ".color");
   }
   if (o.contains("material")) {
     const json& m = o["material"];
@@ -141,9 +153,11 @@ void parse_object(Scene& scene, const Ctx& cx, const json& j, std::size_t index)
     has_color = true;
   }
 
-  const long long count = o.contains("count") ? cx.integer(o["count"], where + ".count", 1, 1 << 20) : 1;
+  const long long count =
+      o.contains("count") ? cx.integer(o["count"], where + ".count", 1, 1 << 20) : 1;
   const std::uint64_t seed =
-      o.contains("seed") ? std::uint64_t(cx.integer(o["seed"], where + ".seed", 0, (1ll << 53))) : 1;
+      o.contains("seed") ? std::uint64_t(cx.integer(o["seed"], where + ".seed", 0, (1ll << 53)))
+                         : 1;
   glm::dvec3 lo(-1), hi(1);
   const bool placed = o.contains("placement");
   if (placed) {
@@ -167,13 +181,16 @@ void parse_object(Scene& scene, const Ctx& cx, const json& j, std::size_t index)
   for (long long c = 0; c < count; ++c) {
     ObjectSpec copy = spec;
     if (placed || count > 1)
-      copy.xf.translate = base + glm::dvec3(g.coord(lo.x, hi.x), g.coord(lo.y, hi.y), g.coord(lo.z, hi.z));
+      copy.xf.translate =
+          base + glm::dvec3(g.coord(lo.x, hi.x), g.coord(lo.y, hi.y), g.coord(lo.z, hi.z));
     glm::vec3 col = random_colour ? random_color(g) : color;
     copy.color = col;
     copy.material = has_color ? color_material(scene, col) : 0;
     if (!has_color) copy.color = scene.materials[0].kd;
-    if (k == "mesh") append_obj(scene, copy.file, copy.xf, copy.material, flip);
-    else add_object(scene, copy);
+    if (k == "mesh")
+      append_obj(scene, copy.file, copy.xf, copy.material, flip);
+    else
+      add_object(scene, copy);
   }
 }
 
@@ -187,7 +204,8 @@ void load_json_scene(Scene& scene, const std::string& path) {
     j = json::parse(src);
   } catch (const json::parse_error& e) {
     int line = 1;
-    for (std::size_t i = 0; i + 1 < e.byte && i < src.size(); ++i) line += src[i] == '\n';
+    for (std::size_t i = 0; i + 1 < e.byte && i < src.size(); ++i)
+      line += src[i] == '\n';
     std::string why = e.what();
     if (auto p = why.find("] "); p != std::string::npos) why = why.substr(p + 2);
     if (auto p = why.find(": "); p != std::string::npos && why.rfind("parse error", 0) == 0)
@@ -202,8 +220,10 @@ void load_json_scene(Scene& scene, const std::string& path) {
     const json& im = j["image"];
     if (!im.is_object()) cx.fail("image", "expected {\"width\": W, \"height\": H}");
     check_keys(cx, im, "image", {"width", "height"});
-    if (im.contains("width")) scene.width = int(cx.integer(im["width"], "image.width", 0, 1ll << 30));
-    if (im.contains("height")) scene.height = int(cx.integer(im["height"], "image.height", 0, 1ll << 30));
+    if (im.contains("width"))
+      scene.width = int(cx.integer(im["width"], "image.width", 0, 1ll << 30));
+    if (im.contains("height"))
+      scene.height = int(cx.integer(im["height"], "image.height", 0, 1ll << 30));
   }
   if (j.contains("background")) scene.background = cx.color(j["background"], "background");
   if (j.contains("ambient")) {
@@ -238,19 +258,26 @@ void load_json_scene(Scene& scene, const std::string& path) {
   }
   if (j.contains("cull")) {
     std::string c = cx.string(j["cull"], "cull");
-    if (c == "none") scene.cull = CullMode::None;
-    else if (c == "back") scene.cull = CullMode::Back;
-    else cx.fail("cull", "expected \"none\" or \"back\"");
+    if (c == "none")
+      scene.cull = CullMode::None;
+    else if (c == "back")
+      scene.cull = CullMode::Back;
+    else
+      cx.fail("cull", "expected \"none\" or \"back\"");
   }
   if (j.contains("texture_filter")) {
     std::string f = cx.string(j["texture_filter"], "texture_filter");
-    if (f == "nearest") scene.filter = TextureFilter::Nearest;
-    else if (f == "bilinear") scene.filter = TextureFilter::Bilinear;
-    else cx.fail("texture_filter", "expected \"nearest\" or \"bilinear\"");
+    if (f == "nearest")
+      scene.filter = TextureFilter::Nearest;
+    else if (f == "bilinear")
+      scene.filter = TextureFilter::Bilinear;
+    else
+      cx.fail("texture_filter", "expected \"nearest\" or \"bilinear\"");
   }
   if (!j.contains("objects") || !j["objects"].is_array() || j["objects"].empty())
     cx.fail("objects", "expected a non-empty array");
-  for (std::size_t i = 0; i < j["objects"].size(); ++i) parse_object(scene, cx, j["objects"][i], i);
+  for (std::size_t i = 0; i < j["objects"].size(); ++i)
+    parse_object(scene, cx, j["objects"][i], i);
 
   if (j.contains("camera")) {
     const json& c = j["camera"];
@@ -263,7 +290,8 @@ void load_json_scene(Scene& scene, const std::string& path) {
     if (c.contains("fov")) cam.fovy_deg = cx.number(c["fov"], "camera.fov");
     if (c.contains("near")) cam.znear = cx.number(c["near"], "camera.near");
     if (c.contains("far")) cam.zfar = cx.number(c["far"], "camera.far");
-    if (!(cam.fovy_deg > 0 && cam.fovy_deg < 180)) cx.fail("camera.fov", "must be in (0, 180) degrees");
+    if (!(cam.fovy_deg > 0 && cam.fovy_deg < 180))
+      cx.fail("camera.fov", "must be in (0, 180) degrees");
     if (glm::length(cam.target - cam.eye) == 0) cx.fail("camera", "eye and target coincide");
     if (glm::length(glm::cross(cam.target - cam.eye, cam.up)) == 0)
       cx.fail("camera.up", "parallel to the view direction");

@@ -7,9 +7,9 @@
 
 #include "geometry/camera.hpp"
 #include "scene/bezier.hpp"
+#include "scene/input_error.hpp"
 #include "scene/loaders.hpp"
 #include "scene/text.hpp"
-#include "scene/input_error.hpp"
 
 namespace zc {
 

@@ -8,9 +8,9 @@
 
 #include <tiny_obj_loader.h>
 
+#include "scene/input_error.hpp"
 #include "scene/loaders.hpp"
 #include "scene/text.hpp"
-#include "scene/input_error.hpp"
 
 namespace zc {
 
@@ -37,15 +37,18 @@ template <class F> void for_lines(const std::string& s, F&& f) {
 
 std::string_view keyword(std::string_view l) {
   std::size_t j = 0;
-  while (j < l.size() && l[j] != ' ' && l[j] != '\t') ++j;
+  while (j < l.size() && l[j] != ' ' && l[j] != '\t')
+    ++j;
   return l.substr(0, j);
 }
 
-void need_numbers(const std::string& file, const Line& l, std::size_t min_count, std::size_t max_count) {
+void need_numbers(const std::string& file, const Line& l, std::size_t min_count,
+                  std::size_t max_count) {
   auto tok = text::split(l.text);
   if (tok.size() < min_count + 1)
     throw InputError(file, l.number,
-                     "'" + std::string(tok[0]) + "' needs " + std::to_string(min_count) + " numbers");
+                     "'" + std::string(tok[0]) + "' needs " + std::to_string(min_count) +
+                         " numbers");
   for (std::size_t k = 1; k < tok.size() && k <= max_count; ++k)
     if (!text::to_float(tok[k]))
       throw InputError(file, l.number, "not a finite number: '" + std::string(tok[k]) + "'");
@@ -105,9 +108,12 @@ ObjCheck check_obj(const std::string& path, const std::string& s) {
   long long total[3] = {0, 0, 0}; // v, vt, vn
   for_lines(s, [&](const Line& l) {
     std::string_view k = keyword(l.text);
-    if (k == "v") ++total[0];
-    else if (k == "vt") ++total[1];
-    else if (k == "vn") ++total[2];
+    if (k == "v")
+      ++total[0];
+    else if (k == "vt")
+      ++total[1];
+    else if (k == "vn")
+      ++total[2];
   });
   ObjCheck out;
   long long seen[3] = {0, 0, 0};
@@ -136,13 +142,13 @@ ObjCheck check_obj(const std::string& path, const std::string& s) {
           if (num.empty() && part > 0) continue; // v//vn
           static const char* what[3] = {"vertex", "texture coordinate", "normal"};
           auto v = text::to_int(num);
-          if (!v)
-            throw InputError(path, l.number, "bad face vertex '" + std::string(tok[q]) + "'");
+          if (!v) throw InputError(path, l.number, "bad face vertex '" + std::string(tok[q]) + "'");
           long long idx = *v < 0 ? seen[part] + *v + 1 : *v;
           if (*v == 0 || idx < 1 || idx > total[part])
             throw InputError(path, l.number,
                              std::string(what[part]) + " index " + std::to_string(*v) +
-                                 " out of range (the file has " + std::to_string(total[part]) + ")");
+                                 " out of range (the file has " + std::to_string(total[part]) +
+                                 ")");
         }
       }
       ++out.faces;
@@ -151,7 +157,8 @@ ObjCheck check_obj(const std::string& path, const std::string& s) {
       if (tok.size() < 2) throw InputError(path, l.number, "mtllib needs a file name");
       for (std::size_t q = 1; q < tok.size(); ++q) {
         MtlInfo m = check_mtl(text::join_path(dir, std::string(tok[q])), path, l.number);
-        for (auto& [name, tex] : m.texture) out.texture[name] = tex;
+        for (auto& [name, tex] : m.texture)
+          out.texture[name] = tex;
       }
     } else if (k == "usemtl") {
       if (text::split(l.text).size() < 2) throw InputError(path, l.number, "usemtl needs a name");
@@ -207,7 +214,8 @@ void append_obj(Scene& scene, const std::string& path, const ObjectTransform& xf
   bool textured = false;
   for (const auto& sh : shapes)
     for (int id : sh.mesh.material_ids)
-      if (id >= 0 && std::size_t(id) < mats.size() && mat_textured[std::size_t(id)]) textured = true;
+      if (id >= 0 && std::size_t(id) < mats.size() && mat_textured[std::size_t(id)])
+        textured = true;
 
   // Face-varying corners (v, vn, vt) become zcube vertices, first come first numbered; vt takes
   // part only when the mesh is textured (pay only for what is used).
@@ -217,7 +225,8 @@ void append_obj(Scene& scene, const std::string& path, const ObjectTransform& xf
   };
   struct KeyHash {
     std::size_t operator()(const Key& k) const {
-      return std::size_t(k.v) * 0x9E3779B97F4A7C15ull ^ std::size_t(k.n + 1) * 0xC2B2AE3D27D4EB4Full ^
+      return std::size_t(k.v) * 0x9E3779B97F4A7C15ull ^
+             std::size_t(k.n + 1) * 0xC2B2AE3D27D4EB4Full ^
              std::size_t(k.t + 1) * 0x165667B19E3779F9ull;
     }
   };
@@ -239,7 +248,7 @@ void append_obj(Scene& scene, const std::string& path, const ObjectTransform& xf
       }
       int mid = f < sh.mesh.material_ids.size() ? sh.mesh.material_ids[f] : -1;
       std::uint32_t mat = mid >= 0 && std::size_t(mid) < mats.size() ? mat_base + std::uint32_t(mid)
-                                                                      : default_material;
+                                                                     : default_material;
       for (std::size_t c = 1; c + 1 < nv; ++c) { // a polygon becomes a fan around its first corner
         Triangle t;
         t.v[0] = corner[0];
@@ -261,11 +270,13 @@ void append_obj(Scene& scene, const std::string& path, const ObjectTransform& xf
   std::vector<glm::dvec3> area_n;
   auto file_normal = [&](const Key& k) {
     if (k.n < 0 || 3 * std::size_t(k.n) + 2 >= attrib.normals.size()) return glm::dvec3(0);
-    return glm::dvec3(attrib.normals[3 * std::size_t(k.n)], attrib.normals[3 * std::size_t(k.n) + 1],
+    return glm::dvec3(attrib.normals[3 * std::size_t(k.n)],
+                      attrib.normals[3 * std::size_t(k.n) + 1],
                       attrib.normals[3 * std::size_t(k.n) + 2]);
   };
   bool need_area = false; // some corner has no usable file normal
-  for (const auto& k : keys) need_area |= !(glm::length(file_normal(k)) > 0);
+  for (const auto& k : keys)
+    need_area |= !(glm::length(file_normal(k)) > 0);
   if (need_area) {
     area_n.assign(npos, glm::dvec3(0));
     for (const auto& t : tris) {
@@ -303,12 +314,14 @@ void append_obj(Scene& scene, const std::string& path, const ObjectTransform& xf
     if (textured || !scene.uvs.empty()) {
       glm::vec2 uv(0);
       if (k.t >= 0 && 2 * std::size_t(k.t) + 1 < attrib.texcoords.size())
-        uv = glm::vec2(attrib.texcoords[2 * std::size_t(k.t)], attrib.texcoords[2 * std::size_t(k.t) + 1]);
+        uv = glm::vec2(attrib.texcoords[2 * std::size_t(k.t)],
+                       attrib.texcoords[2 * std::size_t(k.t) + 1]);
       scene.uvs.push_back(uv);
     }
   }
   for (auto& t : tris) {
-    for (auto& v : t.v) v += d.first_vertex;
+    for (auto& v : t.v)
+      v += d.first_vertex;
     if (flip) std::swap(t.v[1], t.v[2]);
   }
   scene.triangles.insert(scene.triangles.end(), tris.begin(), tris.end());
@@ -318,7 +331,8 @@ void append_obj(Scene& scene, const std::string& path, const ObjectTransform& xf
   if (!identity) {
     d.text += " matrix ";
     for (int c = 0; c < 4; ++c)
-      for (int r = 0; r < 4; ++r) d.text += text::fmt(M[c][r]) + (c == 3 && r == 3 ? "" : ",");
+      for (int r = 0; r < 4; ++r)
+        d.text += text::fmt(M[c][r]) + (c == 3 && r == 3 ? "" : ",");
   }
   d.text += " mat " + std::to_string(default_material);
   if (flip_winding) d.text += " flip";

@@ -34,11 +34,13 @@ std::uint32_t vert(LocalMesh& m, const glm::dvec3& p, const glm::dvec3& n) {
 LocalMesh make_sphere(int recursion) {
   LocalMesh m;
   const glm::dvec3 oct[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  for (const auto& p : oct) vert(m, p, p);
+  for (const auto& p : oct)
+    vert(m, p, p);
   // Eight faces, counter-clockwise seen from outside.
   const int faces[8][3] = {{0, 2, 4}, {4, 2, 1}, {1, 2, 5}, {5, 2, 0},
                            {4, 3, 0}, {1, 3, 4}, {5, 3, 1}, {0, 3, 5}};
-  for (const auto& f : faces) tri(m, std::uint32_t(f[0]), std::uint32_t(f[1]), std::uint32_t(f[2]));
+  for (const auto& f : faces)
+    tri(m, std::uint32_t(f[0]), std::uint32_t(f[1]), std::uint32_t(f[2]));
   for (int level = 0; level < recursion; ++level) {
     std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> mid;
     auto midpoint = [&](std::uint32_t a, std::uint32_t b) {
@@ -127,8 +129,10 @@ LocalMesh make_cylinder(int slices) {
     }
     for (int k = 0; k < slices; ++k) {
       std::uint32_t a = first + std::uint32_t(k), b = first + std::uint32_t((k + 1) % slices);
-      if (cap) tri(m, centre, a, b);
-      else tri(m, centre, b, a);
+      if (cap)
+        tri(m, centre, a, b);
+      else
+        tri(m, centre, b, a);
     }
   }
   return m;

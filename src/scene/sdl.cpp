@@ -21,11 +21,12 @@
 #include "geometry/camera.hpp"
 #include "scene/bezier.hpp"
 #include "scene/colors.hpp"
+#include "scene/input_error.hpp"
 #include "scene/loaders.hpp"
 #include "scene/prng.hpp"
 #include "scene/text.hpp"
-#include "scene/input_error.hpp"
 
+#include <filesystem>
 #include <numbers>
 
 namespace zc {
@@ -61,7 +62,8 @@ struct Sdl {
   }
   glm::vec3 color(std::string_view s, const std::string& what) const {
     if (auto c = named_color(std::string(s))) return *c;
-    if (s.find(',') == std::string_view::npos) fail(what + ": unknown colour '" + std::string(s) + "'");
+    if (s.find(',') == std::string_view::npos)
+      fail(what + ": unknown colour '" + std::string(s) + "'");
     glm::dvec3 c = vec3(s, what);
     for (int k = 0; k < 3; ++k)
       if (c[k] < 0 || c[k] > 1) fail(what + ": colour components must be in 0..1");
@@ -145,13 +147,18 @@ void load_sdl_scene(Scene& scene, const std::string& path) {
       std::string s = text::lower(tok[1]);
       auto x = s.find('x');
       if (x == std::string::npos) p.fail("size needs WxH");
-      scene.width = int(p.integer(std::string_view(s).substr(0, x), "size width", 1, kMaxImageSide));
-      scene.height = int(p.integer(std::string_view(s).substr(x + 1), "size height", 1, kMaxImageSide));
+      scene.width =
+          int(p.integer(std::string_view(s).substr(0, x), "size width", 1, kMaxImageSide));
+      scene.height =
+          int(p.integer(std::string_view(s).substr(x + 1), "size height", 1, kMaxImageSide));
     } else if (key == "cull") {
       arg(1);
-      if (tok[1] == "none") scene.cull = CullMode::None;
-      else if (tok[1] == "back") scene.cull = CullMode::Back;
-      else p.fail("cull must be none or back");
+      if (tok[1] == "none")
+        scene.cull = CullMode::None;
+      else if (tok[1] == "back")
+        scene.cull = CullMode::Back;
+      else
+        p.fail("cull must be none or back");
     } else if (key == "seed") {
       arg(1);
       seed = std::uint64_t(p.integer(tok[1], "seed", 0, 1ll << 53));
@@ -185,14 +192,18 @@ void load_sdl_scene(Scene& scene, const std::string& path) {
       if (key == "rot") {
         spec.xf.rotate_deg = p.vec3(v, "rot") * (180.0 / std::numbers::pi);
       } else if (key == "scale") {
-        if (v.find(',') != std::string_view::npos) spec.xf.scale = p.vec3(v, "scale");
-        else spec.xf.scale = glm::dvec3(p.number(v, "scale"));
+        if (v.find(',') != std::string_view::npos)
+          spec.xf.scale = p.vec3(v, "scale");
+        else
+          spec.xf.scale = glm::dvec3(p.number(v, "scale"));
       } else if (key == "num") {
         num = p.integer(v, "num", 1, 1 << 20);
       } else if (key == "color" || key == "colour") {
         has_color = true;
-        if (text::lower(v) == "random") random_colour = true;
-        else color = p.color(v, "color");
+        if (text::lower(v) == "random")
+          random_colour = true;
+        else
+          color = p.color(v, "color");
       } else if (key == "recursion") {
         spec.recursion = int(p.integer(v, "recursion", 0, kMaxRecursion));
       } else if (key == "position" || key == "pos") {
@@ -213,6 +224,9 @@ void load_sdl_scene(Scene& scene, const std::string& path) {
       }
     }
     if ((k == "bezier" || k == "mesh") && spec.file.empty()) p.fail(k + " needs a file");
+    std::error_code ec;
+    if (!spec.file.empty() && !std::filesystem::is_regular_file(spec.file, ec))
+      p.fail(k + " file not found: " + spec.file);
     SplitMix64 g(mix_seed(seed, std::uint64_t(ob.line)));
     for (long long c = 0; c < num; ++c) {
       ObjectSpec copy = spec;
@@ -220,8 +234,10 @@ void load_sdl_scene(Scene& scene, const std::string& path) {
       copy.color = random_colour ? random_color(g) : has_color ? color : scene.materials[0].kd;
       copy.material = has_color ? color_material(scene, copy.color) : 0;
       try {
-        if (k == "mesh") append_obj(scene, copy.file, copy.xf, copy.material);
-        else add_object(scene, copy);
+        if (k == "mesh")
+          append_obj(scene, copy.file, copy.xf, copy.material);
+        else
+          add_object(scene, copy);
       } catch (const InputError& e) {
         if (e.file() == "<object>") p.fail(e.reason());
         throw;

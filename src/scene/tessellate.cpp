@@ -3,9 +3,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/bezier.hpp"
+#include "scene/input_error.hpp"
 #include "scene/primitives.hpp"
 #include "scene/text.hpp"
-#include "scene/input_error.hpp"
 
 namespace zc {
 
@@ -24,7 +24,9 @@ std::string vec(const glm::dvec3& v) {
   return text::fmt(v.x) + "," + text::fmt(v.y) + "," + text::fmt(v.z);
 }
 
-[[noreturn]] void bad(const std::string& why) { throw InputError("<object>", 0, why); }
+[[noreturn]] void bad(const std::string& why) {
+  throw InputError("<object>", 0, why);
+}
 
 glm::dvec3 parse_vec(std::string_view s, const char* key) {
   auto tok = text::split(s, true);
@@ -41,7 +43,8 @@ glm::dvec3 parse_vec(std::string_view s, const char* key) {
 int parse_int(std::string_view s, const char* key, int lo, int hi) {
   auto v = text::to_int(s);
   if (!v || *v < lo || *v > hi)
-    bad(std::string(key) + " must be an integer in " + std::to_string(lo) + ".." + std::to_string(hi));
+    bad(std::string(key) + " must be an integer in " + std::to_string(lo) + ".." +
+        std::to_string(hi));
   return int(*v);
 }
 
@@ -57,7 +60,8 @@ std::string object_text(const ObjectSpec& s) {
   if (s.xf.has_matrix) {
     t += " matrix ";
     for (int c = 0; c < 4; ++c)
-      for (int r = 0; r < 4; ++r) t += text::fmt(s.xf.matrix[c][r]) + (c == 3 && r == 3 ? "" : ",");
+      for (int r = 0; r < 4; ++r)
+        t += text::fmt(s.xf.matrix[c][r]) + (c == 3 && r == 3 ? "" : ",");
   } else {
     if (s.xf.rotate_deg != glm::dvec3(0)) t += " rotate " + vec(s.xf.rotate_deg);
     if (s.xf.scale != glm::dvec3(1)) t += " scale " + vec(s.xf.scale);
@@ -73,7 +77,8 @@ ObjectSpec parse_object_text(const std::string& line) {
   std::string_view rest = text::trim(line);
   auto next = [&]() {
     std::size_t i = 0;
-    while (i < rest.size() && rest[i] == ' ') ++i;
+    while (i < rest.size() && rest[i] == ' ')
+      ++i;
     std::size_t j = rest.find(' ', i);
     if (j == std::string_view::npos) j = rest.size();
     std::string_view tok = rest.substr(i, j - i);
@@ -95,13 +100,20 @@ ObjectSpec parse_object_text(const std::string& line) {
     }
     std::string_view val = next();
     if (val.empty()) bad(std::string(key) + " needs a value");
-    if (key == "recursion") s.recursion = parse_int(val, "recursion", 0, kMaxRecursion);
-    else if (key == "slices") s.slices = parse_int(val, "slices", 3, kMaxSlices);
-    else if (key == "level") s.level = parse_int(val, "level", 1, kMaxBezierLevel);
-    else if (key == "radii") s.radii = parse_vec(val, "radii");
-    else if (key == "translate") s.xf.translate = parse_vec(val, "translate");
-    else if (key == "rotate") s.xf.rotate_deg = parse_vec(val, "rotate");
-    else if (key == "scale") s.xf.scale = parse_vec(val, "scale");
+    if (key == "recursion")
+      s.recursion = parse_int(val, "recursion", 0, kMaxRecursion);
+    else if (key == "slices")
+      s.slices = parse_int(val, "slices", 3, kMaxSlices);
+    else if (key == "level")
+      s.level = parse_int(val, "level", 1, kMaxBezierLevel);
+    else if (key == "radii")
+      s.radii = parse_vec(val, "radii");
+    else if (key == "translate")
+      s.xf.translate = parse_vec(val, "translate");
+    else if (key == "rotate")
+      s.xf.rotate_deg = parse_vec(val, "rotate");
+    else if (key == "scale")
+      s.xf.scale = parse_vec(val, "scale");
     else if (key == "mat") {
       s.material = std::uint32_t(parse_int(val, "mat", 0, 1 << 30));
       have_mat = true;
@@ -117,7 +129,8 @@ ObjectSpec parse_object_text(const std::string& line) {
         s.xf.matrix[k / 4][k % 4] = *d;
       }
       s.xf.has_matrix = true;
-    } else bad("unknown key '" + std::string(key) + "'");
+    } else
+      bad("unknown key '" + std::string(key) + "'");
   }
   if (!have_mat) bad("missing 'mat'");
   if ((s.kind == "bezier" || s.kind == "mesh") && s.file.empty()) bad(s.kind + " needs a file");
@@ -126,17 +139,24 @@ ObjectSpec parse_object_text(const std::string& line) {
 
 Tessellation tessellate(const ObjectSpec& s, std::uint32_t first_vertex) {
   LocalMesh m;
-  if (s.kind == "sphere") m = make_sphere(s.recursion);
-  else if (s.kind == "spheroid") m = make_spheroid(s.recursion, s.radii);
-  else if (s.kind == "cube") m = make_cube();
-  else if (s.kind == "cone") m = make_cone(s.slices);
-  else if (s.kind == "cylinder") m = make_cylinder(s.slices);
-  else if (s.kind == "bezier") m = tessellate_patches(*read_bezier_file(s.file), s.level);
+  if (s.kind == "sphere")
+    m = make_sphere(s.recursion);
+  else if (s.kind == "spheroid")
+    m = make_spheroid(s.recursion, s.radii);
+  else if (s.kind == "cube")
+    m = make_cube();
+  else if (s.kind == "cone")
+    m = make_cone(s.slices);
+  else if (s.kind == "cylinder")
+    m = make_cylinder(s.slices);
+  else if (s.kind == "bezier")
+    m = tessellate_patches(*read_bezier_file(s.file), s.level);
   else if (s.kind == "mesh")
     throw InputError(s.file, 0,
                      "mesh objects cannot be re-tessellated from their description: a mesh's "
                      "triangles come from its file, so ship the triangles instead");
-  else bad("unknown object kind '" + s.kind + "'");
+  else
+    bad("unknown object kind '" + s.kind + "'");
 
   const glm::dmat4 M = s.xf.to_matrix();
   const glm::dmat3 N = glm::transpose(glm::inverse(glm::dmat3(M)));
@@ -151,7 +171,8 @@ Tessellation tessellate(const ObjectSpec& s, std::uint32_t first_vertex) {
   }
   t.triangles = std::move(m.triangles);
   for (auto& tr : t.triangles) {
-    for (auto& v : tr.v) v += first_vertex;
+    for (auto& v : tr.v)
+      v += first_vertex;
     if (flip) std::swap(tr.v[1], tr.v[2]);
     tr.material = s.material;
   }

@@ -7,9 +7,9 @@
 // Text grammar (one line, tokens separated by spaces, defaults omitted):
 //   <kind> [recursion R] [slices N] [level L] [radii x,y,z] [translate x,y,z] [rotate x,y,z]
 //          [scale x,y,z] [matrix m00,m01,...,m33] mat M [color r,g,b] [file PATH-to-end-of-line]
-// kind: sphere spheroid cube cone cylinder bezier mesh. rotate is in degrees about x, then y, then z;
-// the object matrix is translate * (matrix, or Rz*Ry*Rx*scale); matrix is column-major.
-// Numbers are printed in their shortest round-trip form, so parsing gives back the same doubles.
+// kind: sphere spheroid cube cone cylinder bezier mesh. rotate is in degrees about x, then y, then
+// z; the object matrix is translate * (matrix, or Rz*Ry*Rx*scale); matrix is column-major. Numbers
+// are printed in their shortest round-trip form, so parsing gives back the same doubles.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -35,8 +35,8 @@ struct ObjectSpec {
   glm::dvec3 radii{1.0, 0.5, 1.0}; // spheroid
   std::string file;                // bezier, mesh
   ObjectTransform xf;
-  std::uint32_t material = 0;   // index into Scene::materials
-  glm::vec3 color{0.8f};        // the material's colour, carried for the reader (not used)
+  std::uint32_t material = 0; // index into Scene::materials
+  glm::vec3 color{0.8f};      // the material's colour, carried for the reader (not used)
 };
 
 std::string object_text(const ObjectSpec& s);

@@ -11,8 +11,10 @@
 namespace zc::text {
 
 std::string_view trim(std::string_view s) {
-  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r' || s.back() == '\n'))
+  while (!s.empty() && (s.front() == ' ' || s.front() == '\t' || s.front() == '\r'))
+    s.remove_prefix(1);
+  while (!s.empty() &&
+         (s.back() == ' ' || s.back() == '\t' || s.back() == '\r' || s.back() == '\n'))
     s.remove_suffix(1);
   return s;
 }
@@ -22,9 +24,11 @@ std::vector<std::string_view> split(std::string_view s, bool commas) {
   std::size_t i = 0;
   auto sep = [&](char c) { return c == ' ' || c == '\t' || c == '\r' || (commas && c == ','); };
   while (i < s.size()) {
-    while (i < s.size() && sep(s[i])) ++i;
+    while (i < s.size() && sep(s[i]))
+      ++i;
     std::size_t j = i;
-    while (j < s.size() && !sep(s[j])) ++j;
+    while (j < s.size() && !sep(s[j]))
+      ++j;
     if (j > i) out.push_back(s.substr(i, j - i));
     i = j;
   }

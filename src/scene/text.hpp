@@ -17,7 +17,7 @@ std::optional<long long> to_int(std::string_view s);
 std::string fmt(double v); // shortest text that parses back to exactly v
 std::string fmt(float v);
 std::string lower(std::string_view s);
-std::string read_file(const std::string& path); // throws InputError(path, 0, ...) if unreadable
+std::string read_file(const std::string& path);    // throws InputError(path, 0, ...) if unreadable
 std::string directory_of(const std::string& path); // "" or "dir/"
 std::string join_path(const std::string& dir, const std::string& rel);
 

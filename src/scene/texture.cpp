@@ -4,8 +4,8 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "scene/loaders.hpp"
 #include "scene/input_error.hpp"
+#include "scene/loaders.hpp"
 
 namespace zc {
 
@@ -14,13 +14,15 @@ Texture load_texture(const std::string& path, const std::string& ref_file, int r
   if (!std::filesystem::is_regular_file(path, ec))
     throw InputError(ref_file, ref_line, "texture file not found: " + path);
   auto in = OIIO::ImageInput::open(path);
-  if (!in) throw InputError(ref_file, ref_line, "cannot read texture " + path + ": " + OIIO::geterror());
+  if (!in)
+    throw InputError(ref_file, ref_line, "cannot read texture " + path + ": " + OIIO::geterror());
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.width > 65536 ||
       spec.height > 65536)
     throw InputError(ref_file, ref_line, "texture " + path + " has an unusable size");
   const int nc = spec.nchannels;
-  std::vector<std::uint8_t> raw(std::size_t(spec.width) * std::size_t(spec.height) * std::size_t(nc));
+  std::vector<std::uint8_t> raw(std::size_t(spec.width) * std::size_t(spec.height) *
+                                std::size_t(nc));
   if (!in->read_image(0, 0, 0, nc, OIIO::TypeDesc::UINT8, raw.data())) {
     std::string err = in->geterror();
     throw InputError(ref_file, ref_line, "cannot decode texture " + path + ": " + err);
