@@ -143,9 +143,11 @@ void scatter_active(const ActivePixels& a, Framebuffer& fb) {
 }
 
 namespace {
-template <class T> void put(std::vector<std::uint8_t>& out, const T& v) {
-  const auto* p = reinterpret_cast<const std::uint8_t*>(&v);
-  out.insert(out.end(), p, p + sizeof(T));
+// Writes v at out[at] (the buffer is sized up front: vector::insert of a few bytes trips a GCC 12
+// -Wstringop-overflow false positive).
+template <class T> void put(std::vector<std::uint8_t>& out, std::size_t& at, const T& v) {
+  std::memcpy(out.data() + at, &v, sizeof(T));
+  at += sizeof(T);
 }
 template <class T> T get(const std::uint8_t*& p, const std::uint8_t* end) {
   if (std::size_t(end - p) < sizeof(T)) throw std::runtime_error("active pixels: truncated");
@@ -158,18 +160,19 @@ template <class T> T get(const std::uint8_t*& p, const std::uint8_t* end) {
 
 // Layout: int32 width, y0, y1; uint32 count per row; then per pixel x(2) rgb(3) z(4) id(4).
 std::vector<std::uint8_t> serialize(const ActivePixels& a) {
-  std::vector<std::uint8_t> out;
-  out.reserve(12 + 4 * std::size_t(a.y1 - a.y0) + kWirePixelBytes * a.pixels.size());
-  put(out, std::int32_t(a.width));
-  put(out, std::int32_t(a.y0));
-  put(out, std::int32_t(a.y1));
-  for (int y = a.y0; y < a.y1; ++y)
-    put(out, a.row_count(y));
+  std::vector<std::uint8_t> out(12 + 4 * std::size_t(a.y1 - a.y0) +
+                                kWirePixelBytes * a.pixels.size());
+  std::size_t at = 0;
+  put(out, at, std::int32_t(a.width));
+  put(out, at, std::int32_t(a.y0));
+  put(out, at, std::int32_t(a.y1));
+  for (int y = a.y0; y < a.y1; ++y) put(out, at, a.row_count(y));
   for (const auto& p : a.pixels) {
-    put(out, p.x);
-    out.insert(out.end(), p.rgb, p.rgb + 3);
-    put(out, p.z);
-    put(out, p.id);
+    put(out, at, p.x);
+    std::memcpy(out.data() + at, p.rgb, 3);
+    at += 3;
+    put(out, at, p.z);
+    put(out, at, p.id);
   }
   return out;
 }

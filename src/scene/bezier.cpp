@@ -4,7 +4,7 @@
 #include <map>
 #include <mutex>
 
-#include "scene/input_error.hpp"
+#include "util/error.hpp"
 #include "scene/text.hpp"
 
 namespace zc {

@@ -7,7 +7,7 @@
 
 #include "geometry/camera.hpp"
 #include "scene/bezier.hpp"
-#include "scene/input_error.hpp"
+#include "util/error.hpp"
 #include "scene/loaders.hpp"
 #include "scene/text.hpp"
 

@@ -8,7 +8,7 @@
 
 #include <tiny_obj_loader.h>
 
-#include "scene/input_error.hpp"
+#include "util/error.hpp"
 #include "scene/loaders.hpp"
 #include "scene/text.hpp"
 

@@ -21,7 +21,7 @@
 #include "geometry/camera.hpp"
 #include "scene/bezier.hpp"
 #include "scene/colors.hpp"
-#include "scene/input_error.hpp"
+#include "util/error.hpp"
 #include "scene/loaders.hpp"
 #include "scene/prng.hpp"
 #include "scene/text.hpp"

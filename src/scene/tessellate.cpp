@@ -3,7 +3,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/bezier.hpp"
-#include "scene/input_error.hpp"
+#include "util/error.hpp"
 #include "scene/primitives.hpp"
 #include "scene/text.hpp"
 

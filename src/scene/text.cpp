@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "scene/input_error.hpp"
+#include "util/error.hpp"
 
 namespace zc::text {
 

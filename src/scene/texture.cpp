@@ -4,7 +4,7 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "scene/input_error.hpp"
+#include "util/error.hpp"
 #include "scene/loaders.hpp"
 
 namespace zc {

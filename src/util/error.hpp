@@ -19,8 +19,9 @@ public:
 private:
   static std::string format(const std::string& file, int line, const std::string& reason) {
     std::string s = file.empty() ? std::string("<input>") : file;
-    if (line > 0) s += ":" + std::to_string(line);
-    return s + ": " + reason;
+    if (line > 0) s.append(":").append(std::to_string(line));
+    s.append(": ").append(reason);
+    return s;
   }
   std::string file_;
   int line_;
