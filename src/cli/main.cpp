@@ -36,8 +36,7 @@ int main(int argc, char** argv) {
   auto& reg = zc::cli::registry();
   auto it = reg.find(cmd);
   if (it == reg.end()) {
-    std::cerr << "zcube: error: unknown command '" << cmd << "'\n";
-    usage(std::cerr);
+    std::cerr << "zcube: error: unknown command '" << cmd << "' (zcube --help lists them)\n";
     return 2;
   }
   std::vector<std::string> args(argv + 2, argv + argc);

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Every bad input file: `zcube render` exits with status 2 and prints exactly one line on stderr
+# that names the file. Also bad flags (size 0, absurd size, unknown command).
+set -u
+zcube=$1
+data=$2
+fail=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+check() { # name expected-substring command...
+  local name=$1 want=$2
+  shift 2
+  "$@" >"$tmp/out" 2>"$tmp/err"
+  local rc=$? lines
+  lines=$(wc -l <"$tmp/err")
+  if [ "$rc" -ne 2 ] || [ "$lines" -ne 1 ] || ! grep -q -- "$want" "$tmp/err"; then
+    echo "FAIL $name: exit $rc, $lines stderr lines: $(head -c 300 "$tmp/err")"
+    fail=1
+  else
+    echo "ok   $name: $(cat "$tmp/err")"
+  fi
+}
+for f in "$data"/bad/*; do
+  case "$f" in *.mtl) continue ;; esac # referenced by the OBJ files
+  # The error names the file at fault: the OBJ itself or the MTL it pulls in.
+  check "$(basename "$f")" "$(basename "${f%.*}")" "$zcube" render --scene "$f" --image "$tmp/x.png"
+done
+check size-zero "--size" "$zcube" render --size 0x10 --image "$tmp/x.png"
+check size-huge "--size" "$zcube" render --size 100000x100000 --image "$tmp/x.png"
+check size-garbage "--size" "$zcube" render --size banana --image "$tmp/x.png"
+check missing-scene "nope.json" "$zcube" render --scene "$tmp/nope.json" --image "$tmp/x.png"
+check unknown-command "unknown command" "$zcube" frobnicate
+exit $fail
