@@ -9,8 +9,10 @@
 
 namespace zc {
 
-NodeRenderer::NodeRenderer(const Scene& scene)
-    : view_(make_view(scene)), shade_(ShadeContext::of(scene)), background_(scene.background),
+NodeRenderer::NodeRenderer(const Scene& scene) : NodeRenderer(scene, scene.camera) {}
+
+NodeRenderer::NodeRenderer(const Scene& scene, const Camera& camera)
+    : view_(make_view(scene, camera)), shade_(ShadeContext::of(scene)), background_(scene.background),
       cull_back_(scene.cull == CullMode::Back) {}
 
 void NodeRenderer::setup(std::uint32_t id, const Triangle& tri, const ProjectedVertex* const pv[3],

@@ -18,6 +18,7 @@ namespace zc {
 class NodeRenderer {
 public:
   explicit NodeRenderer(const Scene& scene);
+  NodeRenderer(const Scene& scene, const Camera& camera); // another frame's camera
 
   const View& view() const { return view_; }
   const ShadeContext& shade() const { return shade_; }

@@ -32,5 +32,7 @@ struct View {
 
 // Builds the view of a scene (resolving near/far from its bounds when the camera leaves them 0).
 View make_view(const Scene& scene);
+// The same with another camera (frames of an animation).
+View make_view(const Scene& scene, const Camera& camera);
 
 } // namespace zc

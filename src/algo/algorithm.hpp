@@ -1,0 +1,103 @@
+#pragma once
+// What an algorithm sees of the simulated machine (DESIGN §2: no SimGrid type here, so the same
+// algorithm code can later run on an MPI backend). One NodeContext per node actor (and one for
+// the host computer, srm, when the algorithm uses it).
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "comm/comm.hpp"
+#include "raster/counters.hpp"
+#include "raster/framebuffer.hpp"
+#include "scene/scene.hpp"
+
+namespace zc {
+
+// A node ran out of its modelled memory (Kurc et al. mark such runs '*').
+class OutOfNodeMemory : public std::runtime_error {
+public:
+  OutOfNodeMemory(int node, const std::string& what, double needed, double capacity)
+      : std::runtime_error("node " + std::to_string(node) + " out of memory: " + what + " needs " +
+                           std::to_string(std::int64_t(needed)) + " bytes in all, " +
+                           std::to_string(std::int64_t(needed - capacity)) + " over its " +
+                           std::to_string(std::int64_t(capacity)) + " bytes"),
+        node(node), over_by(needed - capacity) {}
+  int node;
+  double over_by;
+};
+
+struct AlgorithmOptions {
+  int frames = 1;
+  std::map<std::string, std::string>
+      values; // algorithm-specific (--vertices request, --packet 100)
+  std::string get(const std::string& key, const std::string& def) const {
+    auto it = values.find(key);
+    return it == values.end() ? def : it->second;
+  }
+};
+
+class NodeContext {
+public:
+  virtual ~NodeContext() = default;
+
+  virtual Comm& comm() = 0;
+  int rank() { return comm().rank(); }
+  int nodes() { return comm().size(); }
+
+  // The scene as loaded by the host. Algorithms read from it only what the node was sent, or what
+  // the host (node 0 for methods without one) is entitled to read: the global view is a
+  // convenience of the simulator, not a shared memory of the machine.
+  virtual const Scene& scene() const = 0;
+  virtual const AlgorithmOptions& options() const = 0;
+
+  // Charges the counted operations to this node's CPU: virtual time advances by
+  // sum(count x cost) x cpu-scale.
+  virtual void charge(const Counters& work) = 0;
+
+  // Named phase: the time between begin and end is recorded for this node (a phase may be entered
+  // several times; the durations add up).
+  virtual void phase_begin(const std::string& name) = 0;
+  virtual void phase_end() = 0;
+  class Phase {
+  public:
+    Phase(NodeContext& c, const std::string& name) : c_(c) { c_.phase_begin(name); }
+    ~Phase() { c_.phase_end(); }
+    Phase(const Phase&) = delete;
+    Phase& operator=(const Phase&) = delete;
+
+  private:
+    NodeContext& c_;
+  };
+  Phase phase(const std::string& name) { return Phase(*this, name); }
+
+  // Modelled node memory: alloc throws OutOfNodeMemory when the node's capacity is exceeded.
+  virtual void alloc(double bytes, const std::string& what) = 0;
+  virtual void release(double bytes) = 0;
+
+  // The node holding the final picture of a frame hands it over (a full-screen frame buffer).
+  virtual void deliver_image(int frame, Framebuffer image) = 0;
+
+  // Algorithm-specific figures for the report (merged into its top level, e.g. "load_imbalance",
+  // "communication": {"concurrent_volume_bytes": ...}). Node 0's are used.
+  virtual nlohmann::json& metrics() = 0;
+};
+
+struct Algorithm {
+  std::string name;
+  std::string summary;
+  bool uses_host = false; // a host-computer actor runs `host`
+  std::function<void(NodeContext&)> node;
+  std::function<void(NodeContext&)> host;
+  std::vector<std::string> option_keys; // accepted AlgorithmOptions::values keys
+};
+
+const std::vector<Algorithm>& algorithms();
+const Algorithm& find_algorithm(const std::string& name); // UsageError when unknown
+
+} // namespace zc

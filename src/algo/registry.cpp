@@ -1,0 +1,22 @@
+#include "algo/algorithm.hpp"
+#include "algo/pingpong.hpp"
+#include "algo/sequential.hpp"
+#include "util/error.hpp"
+
+namespace zc {
+
+const std::vector<Algorithm>& algorithms() {
+  static const std::vector<Algorithm> all = {sequential_algorithm(), pingpong_algorithm()};
+  return all;
+}
+
+const Algorithm& find_algorithm(const std::string& name) {
+  for (const auto& a : algorithms())
+    if (a.name == name) return a;
+  std::string known;
+  for (const auto& a : algorithms())
+    known += (known.empty() ? "" : ", ") + a.name;
+  throw UsageError("--algorithm '" + name + "': unknown (known: " + known + ")");
+}
+
+} // namespace zc

@@ -1,0 +1,64 @@
+#include "algo/sequential.hpp"
+
+#include "geometry/camera_path.hpp"
+#include "raster/renderer.hpp"
+#include "raster/zbuffer.hpp"
+
+namespace zc {
+
+namespace {
+
+void sequential_node(NodeContext& ctx) {
+  if (ctx.rank() != 0) return;
+  const Scene& base = ctx.scene();
+  const int frames = ctx.options().frames;
+  for (int f = 0; f < frames; ++f) {
+    const NodeRenderer nr(base, camera_at_frame(base.camera, f, frames));
+    const double fb_bytes = double(base.width) * base.height * 11.0; // rgb + depth + id
+    const double pv_bytes = double(base.vertices.size()) * sizeof(ProjectedVertex);
+    ctx.alloc(fb_bytes + pv_bytes, "frame buffer and projected vertices");
+    std::vector<ProjectedVertex> pv(base.vertices.size());
+    {
+      auto ph = ctx.phase("project");
+      Counters c;
+      for (std::size_t i = 0; i < pv.size(); ++i)
+        pv[i] = nr.project(base.vertices[i], c);
+      ctx.charge(c);
+    }
+    Framebuffer fb = nr.make_framebuffer(RowSet::all(base.height));
+    {
+      auto ph = ctx.phase("zbuffer");
+      Counters c;
+      c.pixels_cleared = std::uint64_t(base.width) * base.height;
+      const bool textured = base.textured();
+      TriangleBatch batch;
+      for (std::size_t i = 0; i < base.triangles.size(); ++i) {
+        const Triangle& t = base.triangles[i];
+        const ProjectedVertex* p[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
+        const glm::vec2* uv[3] = {nullptr, nullptr, nullptr};
+        if (textured)
+          for (int k = 0; k < 3; ++k)
+            uv[k] = &base.uvs[t.v[k]];
+        batch.clear();
+        nr.setup(std::uint32_t(i), t, p, textured ? uv : nullptr, batch, c);
+        draw_batch(batch, nr.shade(), fb, c);
+      }
+      c.pixels_final = fb.covered();
+      ctx.charge(c);
+    }
+    ctx.release(fb_bytes + pv_bytes);
+    ctx.deliver_image(f, std::move(fb));
+  }
+}
+
+} // namespace
+
+Algorithm sequential_algorithm() {
+  Algorithm a;
+  a.name = "sequential";
+  a.summary = "one node renders everything (the reference for speed-ups)";
+  a.node = sequential_node;
+  return a;
+}
+
+} // namespace zc

@@ -1,0 +1,8 @@
+#pragma once
+#include "algo/algorithm.hpp"
+
+namespace zc {
+// The reference: node 0 renders every frame alone with the scanline z-buffer; speed-ups are
+// measured against it (DESIGN §6).
+Algorithm sequential_algorithm();
+} // namespace zc

@@ -1,0 +1,51 @@
+// zcube pingpong: the classic message-passing benchmark, on a simulated machine.
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+
+#include "cli/command.hpp"
+#include "cli/parse.hpp"
+#include "cli/sim_options.hpp"
+
+namespace zc::cli {
+
+static int cmd_pingpong(std::vector<std::string> args) {
+  CLI::App app{"Ping-pong benchmark: virtual one-way time per message size and distance",
+               "zcube pingpong"};
+  SimFlags sf;
+  sf.nodes = 2;
+  sf.add_to(app);
+  int from = 0, to = -1;
+  std::string sizes = "0,64,100,101,1024,65536", report;
+  app.add_option("--from", from, "sending node")->capture_default_str();
+  app.add_option("--to", to, "answering node (default: every other node)");
+  app.add_option("--sizes", sizes, "message sizes in bytes")->capture_default_str();
+  app.add_option("--report", report, "write the report JSON");
+  if (int rc = parse(app, args); rc >= 0) return rc;
+  SimConfig cfg;
+  sf.apply(cfg);
+  cfg.algorithm = "pingpong";
+  cfg.compare_with_sequential = false;
+  cfg.options.values = {
+      {"from", std::to_string(from)}, {"to", std::to_string(to)}, {"sizes", sizes}};
+  SimResult r = run_simulation(cfg);
+  if (!report.empty()) std::ofstream(report) << r.report.dump(2) << "\n";
+  if (!r.ok) {
+    std::cerr << "zcube: error: " << r.error << "\n";
+    return 1;
+  }
+  std::cout << "# " << r.report["machine"].get<std::string>() << ", " << r.report["nodes"]
+            << " nodes, " << r.report["topology"].get<std::string>() << ", "
+            << r.report["fidelity"].get<std::string>() << "\n"
+            << "# from  to  hops     bytes   one_way_us\n";
+  for (const auto& x : r.report["results"])
+    std::cout << std::setw(6) << x["from"].get<int>() << std::setw(4) << x["to"].get<int>()
+              << std::setw(6) << x["hops"].get<int>() << std::setw(10)
+              << x["bytes"].get<std::uint64_t>() << std::setw(13) << std::fixed
+              << std::setprecision(3) << x["one_way_s"].get<double>() * 1e6 << "\n";
+  return 0;
+}
+
+ZC_COMMAND("pingpong", "communication benchmark on a simulated machine", cmd_pingpong);
+
+} // namespace zc::cli

@@ -1,0 +1,44 @@
+#pragma once
+// Packing trivially copyable records into message payloads and back: the bytes that travel are
+// exactly the records' bytes, so the size charged to the network is the real data size.
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <type_traits>
+#include <vector>
+
+namespace zc {
+
+using Bytes = std::vector<std::uint8_t>; // same as comm.hpp
+
+template <class T> Bytes pack(const T* data, std::size_t n) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  Bytes b(n * sizeof(T));
+  if (n) std::memcpy(b.data(), data, b.size());
+  return b;
+}
+template <class T> Bytes pack(const std::vector<T>& v) {
+  return pack(v.data(), v.size());
+}
+
+template <class T> std::vector<T> unpack(const std::uint8_t* data, std::size_t size) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  if (size % sizeof(T) != 0)
+    throw std::runtime_error("unpack: payload size is not a record multiple");
+  std::vector<T> v(size / sizeof(T));
+  if (size) std::memcpy(v.data(), data, size);
+  return v;
+}
+template <class T> std::vector<T> unpack(const Bytes& b) {
+  return unpack<T>(b.data(), b.size());
+}
+
+// Appends records to an existing payload (for payloads made of several record kinds).
+template <class T> void append(Bytes& b, const T* data, std::size_t n) {
+  static_assert(std::is_trivially_copyable_v<T>);
+  const std::size_t at = b.size();
+  b.resize(at + n * sizeof(T));
+  if (n) std::memcpy(b.data() + at, data, n * sizeof(T));
+}
+
+} // namespace zc

@@ -1,0 +1,130 @@
+#include "machine/machine.hpp"
+
+#include "util/error.hpp"
+
+namespace zc {
+
+double CostTable::seconds(const Counters& c) const {
+  double s = 0;
+#define ZC_COST_SUM(f) s += double(c.f) * f;
+  ZC_COUNTER_FIELDS(ZC_COST_SUM)
+#undef ZC_COST_SUM
+  return s;
+}
+
+CostTable CostTable::scaled(double k) const {
+  CostTable t = *this;
+#define ZC_COST_SCALE(f) t.f *= k;
+  ZC_COUNTER_FIELDS(ZC_COST_SCALE)
+#undef ZC_COST_SCALE
+  return t;
+}
+
+std::vector<std::pair<std::string, double*>> CostTable::fields() {
+  std::vector<std::pair<std::string, double*>> v;
+#define ZC_COST_NAME(f) v.emplace_back("cost_" #f, &f);
+  ZC_COUNTER_FIELDS(ZC_COST_NAME)
+#undef ZC_COST_NAME
+  return v;
+}
+
+double NetworkParams::message_time(double bytes, int hops) const {
+  if (hops <= 0) return 0;
+  if (switching == Switching::StoreAndForward) return hops * (startup(bytes) + bytes * per_byte_s);
+  return startup(bytes) + bytes * per_byte_s + (hops - 1) * per_hop_s;
+}
+
+namespace {
+
+// Placeholder CPU costs (uncalibrated: `zcube calibrate` fits them to the papers' figures),
+// sized for compiled C on a 16 MHz 80386 + 80387 node; the i860 tables divide by a clock and
+// architecture factor.
+CostTable i386_costs() {
+  CostTable t;
+  t.vertices_transformed = 120e-6; // 4x4 matrix-vector product + Gouraud cosine, ~40 flops
+  t.triangles_in = 20e-6;
+  t.triangles_culled = 10e-6;
+  t.triangles_clipped = 200e-6;
+  t.triangles_setup = 250e-6; // edge functions + 4 attribute planes
+  t.spans = 40e-6;
+  t.pixels_generated = 12e-6;
+  t.pixels_tested = 4e-6;
+  t.pixels_written = 6e-6;
+  t.pixels_final = 0;
+  t.texels_fetched = 8e-6;
+  t.pixels_cleared = 1.5e-6;
+  t.merge_ops = 8e-6;
+  t.bytes_packed = 0.25e-6;
+  t.triangles_estimated = 15e-6;
+  t.rows_scanned = 3e-6;
+  return t;
+}
+
+std::vector<MachineSpec> make_specs() {
+  std::vector<MachineSpec> v;
+  {
+    MachineSpec m;
+    m.name = "ipsc2";
+    m.description = "Intel iPSC/2: 80386+80387 16 MHz nodes, DCM circuit-switched hypercube";
+    m.memory_bytes = 4.0 * 1048576; // 4 MB base (MACHINES.md)
+    m.net.startup_short_s = 275e-6; // Blazek ch. IV, read as microseconds (MACHINES.md)
+    m.net.startup_long_s = 275e-6;
+    m.net.short_max_bytes = 100;
+    m.net.per_byte_s = 1.0 / 2.8e6; // 2.8 MB/s channel (Nugent 1988)
+    m.net.per_hop_s = 0;            // "nearly equal performance between any pair of nodes"
+    m.net.switching = Switching::Circuit;
+    m.net.host_startup_s = 1e-3;  // SRM link: assumption, Ethernet-class
+    m.net.host_per_byte_s = 1e-6; // ~1 MB/s: assumption
+    m.cost = i386_costs();
+    v.push_back(m);
+  }
+  {
+    MachineSpec m;
+    m.name = "ipsc860";
+    m.description = "Intel iPSC/860: i860 XR 40 MHz nodes, DCM circuit-switched hypercube";
+    m.memory_bytes = 8.0 * 1048576; // ORNL CSEP
+    m.net.startup_short_s = 75e-6;  // Bokhari 1990 (MACHINES.md, low-medium confidence)
+    m.net.startup_long_s = 136e-6;
+    m.net.short_max_bytes = 100;
+    m.net.per_byte_s = 0.36e-6;
+    m.net.per_hop_s = 10e-6; // 10-30 us per hop (Bokhari; Dunigan)
+    m.net.switching = Switching::Circuit;
+    m.net.host_startup_s = 1e-3;
+    m.net.host_per_byte_s = 1e-6;
+    m.cost = i386_costs().scaled(1.0 / 8.0);
+    v.push_back(m);
+  }
+  {
+    MachineSpec m;
+    m.name = "volvox";
+    m.description = "Archipel Volvox: i860 compute + T800 transputer links, store-and-forward";
+    m.memory_bytes = 8.0 * 1048576; // assumption: i860 board as the iPSC/860's
+    m.net.startup_short_s = 50e-6;  // assumption (MACHINES.md): software overhead per hop
+    m.net.startup_long_s = 50e-6;
+    m.net.short_max_bytes = 100;
+    m.net.per_byte_s = 1.0 / 1.7e6; // T800 link, ~1.7 MB/s achieved
+    m.net.per_hop_s = 0;            // the per-hop cost is the whole store-and-forward step
+    m.net.switching = Switching::StoreAndForward;
+    m.net.host_startup_s = 1e-3;
+    m.net.host_per_byte_s = 1e-6;
+    m.cost = i386_costs().scaled(1.0 / 8.0);
+    v.push_back(m);
+  }
+  return v;
+}
+
+} // namespace
+
+const std::vector<std::string>& machine_names() {
+  static const std::vector<std::string> n = {"ipsc2", "ipsc860", "volvox"};
+  return n;
+}
+
+const MachineSpec& machine_spec(const std::string& name) {
+  static const std::vector<MachineSpec> specs = make_specs();
+  for (const auto& s : specs)
+    if (s.name == name) return s;
+  throw UsageError("--machine '" + name + "': expected ipsc2, ipsc860, volvox or a platform .xml");
+}
+
+} // namespace zc

@@ -1,0 +1,64 @@
+#pragma once
+// Machine models as data: the network's message-cost formula, node memory, and the CPU cost
+// table (seconds per counted renderer operation). The built-in figures come from
+// ../shared/MACHINES.md (sources and confidence there); a platform XML carries the same numbers
+// as properties, and a simulation reads them back from the XML, so a what-if study edits data.
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "machine/topology.hpp"
+#include "raster/counters.hpp"
+
+namespace zc {
+
+// Seconds per counted operation, one entry per Counters field (ZC_COUNTER_FIELDS order).
+struct CostTable {
+#define ZC_COST_FIELD(f) double f = 0;
+  ZC_COUNTER_FIELDS(ZC_COST_FIELD)
+#undef ZC_COST_FIELD
+  // Virtual seconds the operations `c` take: sum of count x cost.
+  double seconds(const Counters& c) const;
+  CostTable scaled(double k) const;
+  // (property name "cost_<field>", value) pairs in field order.
+  std::vector<std::pair<std::string, double*>> fields();
+};
+
+enum class Switching { Circuit, StoreAndForward };
+
+// One message of m bytes over h hops, without contention:
+//   circuit (DCM):        startup(m) + m*per_byte + (h-1)*per_hop
+//   store-and-forward:    h * (startup(m) + m*per_byte)
+// startup(m) = startup_short for m <= short_max_bytes, startup_long above (two protocols).
+struct NetworkParams {
+  double startup_short_s = 0;
+  double startup_long_s = 0;
+  double short_max_bytes = 100;
+  double per_byte_s = 0;
+  double per_hop_s = 0;
+  Switching switching = Switching::Circuit;
+  double host_startup_s = 0; // host (SRM) link to node 0
+  double host_per_byte_s = 0;
+
+  double startup(double bytes) const {
+    return bytes <= short_max_bytes ? startup_short_s : startup_long_s;
+  }
+  double message_time(double bytes, int hops) const;
+  double host_link_time(double bytes) const { return host_startup_s + bytes * host_per_byte_s; }
+};
+
+struct MachineSpec {
+  std::string name;        // ipsc2, ipsc860, volvox
+  std::string description; // one line for the XML and the README
+  double memory_bytes = 0; // per node
+  NetworkParams net;
+  CostTable cost;
+  bool cost_calibrated = false;
+};
+
+const std::vector<std::string>& machine_names();
+// The built-in model of a machine; UsageError for an unknown name.
+const MachineSpec& machine_spec(const std::string& name);
+
+} // namespace zc

@@ -1,0 +1,63 @@
+#include "machine/units.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <map>
+
+#include "util/error.hpp"
+
+namespace zc {
+namespace {
+
+double parse_with(const std::string& text, const std::string& flag,
+                  const std::map<std::string, double>& units, const char* what) {
+  const char* b = text.data();
+  const char* e = b + text.size();
+  double v = 0;
+  auto [p, ec] = std::from_chars(b, e, v);
+  if (ec != std::errc() || !std::isfinite(v) || v < 0)
+    throw UsageError(flag + " '" + text + "': expected a non-negative " + what);
+  const std::string unit(p, e);
+  auto it = units.find(unit);
+  if (it == units.end()) {
+    std::string known;
+    for (const auto& [u, f] : units)
+      if (!u.empty()) known += (known.empty() ? "" : ", ") + u;
+    throw UsageError(flag + " '" + text + "': unknown unit '" + unit + "' (use " + known + ")");
+  }
+  return v * it->second;
+}
+
+} // namespace
+
+double parse_time(const std::string& text, const std::string& flag) {
+  static const std::map<std::string, double> u = {{"", 1},      {"s", 1},     {"ms", 1e-3},
+                                                  {"us", 1e-6}, {"ns", 1e-9}, {"ps", 1e-12},
+                                                  {"m", 60},    {"h", 3600}};
+  return parse_with(text, flag, u, "time");
+}
+
+double parse_bandwidth(const std::string& text, const std::string& flag) {
+  static const std::map<std::string, double> u = {
+      {"", 1},           {"Bps", 1},           {"kBps", 1e3},
+      {"KBps", 1e3},     {"MBps", 1e6},        {"GBps", 1e9},
+      {"KiBps", 1024.0}, {"MiBps", 1048576.0}, {"GiBps", 1073741824.0},
+      {"bps", 0.125},    {"kbps", 125.0},      {"Kbps", 125.0},
+      {"Mbps", 125e3},   {"Gbps", 125e6}};
+  return parse_with(text, flag, u, "bandwidth");
+}
+
+double parse_bytes(const std::string& text, const std::string& flag) {
+  static const std::map<std::string, double> u = {
+      {"", 1},     {"B", 1},        {"kB", 1e3},        {"KB", 1e3},          {"MB", 1e6},
+      {"GB", 1e9}, {"KiB", 1024.0}, {"MiB", 1048576.0}, {"GiB", 1073741824.0}};
+  return parse_with(text, flag, u, "size");
+}
+
+std::string format_double(double v) {
+  char buf[64];
+  auto [p, ec] = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, p);
+}
+
+} // namespace zc

@@ -1,1 +1,0 @@
-// Keeps the zcube_sim library non-empty while its folders fill up.

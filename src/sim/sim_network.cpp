@@ -1,0 +1,107 @@
+#include "sim/sim_network.hpp"
+
+#include <algorithm>
+
+#include "util/error.hpp"
+
+namespace zc {
+
+namespace sg = simgrid::s4u;
+
+Fidelity parse_fidelity(const std::string& s) {
+  if (s == "analytic") return Fidelity::Analytic;
+  if (s == "flow") return Fidelity::Flow;
+  if (s == "circuit") return Fidelity::Circuit;
+  throw UsageError("--fidelity '" + s + "': expected analytic, flow or circuit");
+}
+
+const char* fidelity_name(Fidelity f) {
+  switch (f) {
+  case Fidelity::Analytic:
+    return "analytic";
+  case Fidelity::Flow:
+    return "flow";
+  default:
+    return "circuit";
+  }
+}
+
+SimNetwork::SimNetwork(const NetworkParams& params, Topology topo, int nodes, Fidelity fidelity,
+                       std::vector<sg::Host*> hosts)
+    : p_(params), topo_(topo), nodes_(nodes), fid_(fidelity), hosts_(std::move(hosts)) {}
+
+sg::MutexPtr SimNetwork::channel(int a, int b) {
+  auto& m = channels_[{a, b}];
+  if (!m) m = sg::Mutex::create();
+  return m;
+}
+
+// Occupies `channels` for `seconds` of fixed cost; under the flow model, `flow_bytes` then cross
+// the route from flow_src to flow_dst through SimGrid's shared links.
+void SimNetwork::hold(const std::vector<std::pair<int, int>>& chans, double seconds,
+                      double flow_bytes, int flow_src, int flow_dst) {
+  if (fid_ == Fidelity::Flow) {
+    if (seconds > 0) sg::this_actor::sleep_for(seconds);
+    if (flow_bytes > 0)
+      sg::Comm::sendto(hosts_[flow_src], hosts_[flow_dst], std::uint64_t(flow_bytes));
+    return;
+  }
+  if (fid_ == Fidelity::Analytic || chans.empty()) {
+    if (seconds > 0) sg::this_actor::sleep_for(seconds);
+    return;
+  }
+  // Circuit: acquire every channel of the path in one global order (dimension order on the
+  // cube, which is the e-cube path order), hold them for the whole transfer, release.
+  std::vector<std::pair<int, int>> order = chans;
+  if (topo_ == Topology::Cube) {
+    std::stable_sort(order.begin(), order.end(), [](auto x, auto y) {
+      const int dx = x.first ^ x.second, dy = y.first ^ y.second;
+      return dx != dy ? dx < dy : x < y;
+    });
+  } else {
+    std::sort(order.begin(), order.end());
+  }
+  std::vector<sg::MutexPtr> held;
+  for (auto c : order) {
+    held.push_back(channel(c.first, c.second));
+    held.back()->lock();
+  }
+  if (seconds > 0) sg::this_actor::sleep_for(seconds);
+  for (auto it = held.rbegin(); it != held.rend(); ++it)
+    (*it)->unlock();
+}
+
+void SimNetwork::node_transfer(int src, int dst, double m) {
+  if (src == dst) return;
+  const auto path = route(topo_, nodes_, src, dst);
+  const int h = int(path.size());
+  if (p_.switching == Switching::StoreAndForward) {
+    // Each intermediate node receives the whole message before forwarding it.
+    for (auto c : path) {
+      const bool flow = fid_ == Fidelity::Flow;
+      hold({c}, flow ? p_.startup(m) : p_.startup(m) + m * p_.per_byte_s, m, c.first, c.second);
+    }
+    return;
+  }
+  const double fixed = p_.startup(m) + (h - 1) * p_.per_hop_s;
+  if (fid_ == Fidelity::Flow)
+    hold(path, fixed, m, src, dst);
+  else
+    hold(path, fixed + m * p_.per_byte_s, 0, src, dst);
+}
+
+void SimNetwork::transfer(int src, int dst, double m) {
+  const int host = nodes_;
+  if (src == host || dst == host) {
+    // Host link (srm <-> node 0), then the machine's network to or from node 0.
+    if (dst == host) node_transfer(src, 0, m);
+    const std::pair<int, int> link = src == host ? std::pair{host, 0} : std::pair{0, host};
+    const double t = p_.host_startup_s + (fid_ == Fidelity::Flow ? 0 : m * p_.host_per_byte_s);
+    hold({link}, t, fid_ == Fidelity::Flow ? m : 0, link.first, link.second);
+    if (src == host) node_transfer(0, dst, m);
+    return;
+  }
+  node_transfer(src, dst, m);
+}
+
+} // namespace zc

@@ -1,0 +1,42 @@
+#pragma once
+// The simulated interconnect: moves a message of m bytes from one rank to another, taking the
+// virtual time the machine model and the fidelity say. Ranks 0..P-1 are nodes, P is the host
+// computer (srm), linked to node 0.
+#include <map>
+#include <utility>
+#include <vector>
+
+#include <simgrid/s4u.hpp>
+
+#include "machine/machine.hpp"
+#include "sim/fidelity.hpp"
+
+namespace zc {
+
+class SimNetwork {
+public:
+  SimNetwork(const NetworkParams& params, Topology topo, int nodes, Fidelity fidelity,
+             std::vector<simgrid::s4u::Host*> hosts);
+
+  // Blocks the calling actor for the duration of the transfer.
+  void transfer(int src, int dst, double bytes);
+
+  const NetworkParams& params() const { return p_; }
+  Topology topology() const { return topo_; }
+  int nodes() const { return nodes_; }
+
+private:
+  void node_transfer(int src, int dst, double bytes);
+  void hold(const std::vector<std::pair<int, int>>& channels, double seconds, double flow_bytes,
+            int flow_src, int flow_dst);
+  simgrid::s4u::MutexPtr channel(int a, int b);
+
+  NetworkParams p_;
+  Topology topo_;
+  int nodes_;
+  Fidelity fid_;
+  std::vector<simgrid::s4u::Host*> hosts_; // nodes then srm
+  std::map<std::pair<int, int>, simgrid::s4u::MutexPtr> channels_;
+};
+
+} // namespace zc

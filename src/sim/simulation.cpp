@@ -1,0 +1,378 @@
+#include "sim/simulation.hpp"
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include <simgrid/s4u.hpp>
+
+#include "geometry/camera_path.hpp"
+#include "machine/platform_xml.hpp"
+#include "machine/units.hpp"
+#include "raster/image_io.hpp"
+#include "raster/renderer.hpp"
+#include "scene/load.hpp"
+#include "sim/sim_context.hpp"
+#include "util/error.hpp"
+
+namespace zc {
+
+namespace sg = simgrid::s4u;
+
+namespace {
+
+double prop_number(const char* v, const std::string& key, const std::string& where) {
+  if (!v) throw InputError(where, 0, "platform property '" + key + "' is missing");
+  char* end = nullptr;
+  const double d = std::strtod(v, &end);
+  if (end == v || *end != '\0' || !(d >= 0))
+    throw InputError(where, 0, "platform property '" + key + "' is not a non-negative number");
+  return d;
+}
+
+struct PlatformModel {
+  std::string machine;
+  Topology topology = Topology::Cube;
+  int nodes = 0;
+  NetworkParams net;
+  std::vector<CostTable> cost; // per node
+  std::vector<double> memory;  // per node
+};
+
+PlatformModel read_platform(const sg::Engine& e, const std::string& where) {
+  PlatformModel m;
+  const sg::NetZone* z = e.get_netzone_root();
+  // The machine zone is the root, or its only child when the file wraps it.
+  if (!z->get_property("zcube.machine") && z->get_children().size() == 1) z = z->get_children()[0];
+  auto zp = [&](const std::string& k) { return z->get_property(k); };
+  if (!zp("zcube.machine"))
+    throw InputError(where, 0, "not a zcube platform (no zcube.machine property on its zone)");
+  m.machine = zp("zcube.machine");
+  m.topology = parse_topology(zp("zcube.topology") ? zp("zcube.topology") : "");
+  m.nodes = int(prop_number(zp("zcube.nodes"), "zcube.nodes", where));
+  const std::string sw = zp("zcube.switching") ? zp("zcube.switching") : "";
+  if (sw != "circuit" && sw != "store-and-forward")
+    throw InputError(where, 0, "zcube.switching must be circuit or store-and-forward");
+  m.net.switching = sw == "circuit" ? Switching::Circuit : Switching::StoreAndForward;
+  auto num = [&](const char* k) { return prop_number(zp(k), k, where); };
+  m.net.startup_short_s = num("zcube.startup_short_s");
+  m.net.startup_long_s = num("zcube.startup_long_s");
+  m.net.short_max_bytes = num("zcube.short_max_bytes");
+  m.net.per_byte_s = num("zcube.per_byte_s");
+  m.net.per_hop_s = num("zcube.per_hop_s");
+  m.net.host_startup_s = num("zcube.host_startup_s");
+  m.net.host_per_byte_s = num("zcube.host_per_byte_s");
+  for (int r = 0; r < m.nodes; ++r) {
+    const sg::Host* h = e.host_by_name_or_null(node_host_name(r));
+    if (!h) throw InputError(where, 0, "host '" + node_host_name(r) + "' is missing");
+    CostTable t;
+    for (auto& [id, v] : t.fields())
+      *v = prop_number(h->get_property(id), id, where);
+    m.cost.push_back(t);
+    m.memory.push_back(prop_number(h->get_property("memory_bytes"), "memory_bytes", where));
+  }
+  if (!e.host_by_name_or_null(kHostComputerName))
+    throw InputError(where, 0, "host 'srm' is missing");
+  return m;
+}
+
+void apply_overrides(const Overrides& o, PlatformModel& m, sg::Engine& e) {
+  auto& n = m.net;
+  if (o.latency_s) n.startup_short_s = n.startup_long_s = *o.latency_s;
+  if (o.bandwidth_Bps) {
+    if (!(*o.bandwidth_Bps > 0)) throw UsageError("--bandwidth must be positive");
+    n.per_byte_s = 1.0 / *o.bandwidth_Bps;
+  }
+  if (o.per_hop_s) n.per_hop_s = *o.per_hop_s;
+  if (o.memory_bytes)
+    for (auto& mem : m.memory)
+      mem = *o.memory_bytes;
+  double cpu = o.cpu_scale.value_or(1.0);
+  if (o.cost_scale) {
+    const double k = *o.cost_scale;
+    cpu *= k;
+    n.startup_short_s *= k;
+    n.startup_long_s *= k;
+    n.per_byte_s *= k;
+    n.per_hop_s *= k;
+    n.host_startup_s *= k;
+    n.host_per_byte_s *= k;
+  }
+  if (cpu != 1.0)
+    for (auto& c : m.cost)
+      c = c.scaled(cpu);
+  // The links carry the per-byte cost under the flow model.
+  for (sg::Link* l : e.get_all_links()) {
+    const std::string name = l->get_name();
+    const double per_byte = name.rfind("host-", 0) == 0 ? n.host_per_byte_s : n.per_byte_s;
+    l->set_bandwidth(per_byte > 0 ? 1.0 / per_byte : 1e15);
+  }
+}
+
+std::size_t peak_rss_bytes() {
+  struct rusage ru {};
+  getrusage(RUSAGE_SELF, &ru);
+  return std::size_t(ru.ru_maxrss) * 1024;
+}
+
+std::string write_temp_platform(const std::string& xml, const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path();
+  const std::string path = (dir / ("zcube-" + std::to_string(getpid()) + "-" + name)).string();
+  std::ofstream(path) << xml;
+  return path;
+}
+
+} // namespace
+
+SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  const Algorithm& algo = find_algorithm(cfg.algorithm);
+  for (const auto& [k, v] : cfg.options.values)
+    if (std::find(algo.option_keys.begin(), algo.option_keys.end(), k) == algo.option_keys.end())
+      throw UsageError("--" + k + " does not apply to algorithm " + algo.name);
+  if (cfg.options.frames < 1) throw UsageError("--frames must be at least 1");
+
+  Scene loaded;
+  if (!preloaded && !cfg.scene_path.empty()) {
+    LoadOptions lo;
+    lo.width = cfg.width;
+    lo.height = cfg.height;
+    loaded = load_scene(cfg.scene_path, lo);
+  }
+  const Scene& scene = preloaded ? *preloaded : loaded;
+
+  // Platform: a built-in machine is generated on the fly (identical to platforms/), a path is
+  // loaded as given.
+  std::string platform_path, platform_label, tmp;
+  const bool is_file = cfg.machine.size() > 4 && cfg.machine.ends_with(".xml");
+  if (is_file) {
+    if (!std::filesystem::exists(cfg.machine)) throw InputError(cfg.machine, 0, "file not found");
+    platform_path = platform_label = cfg.machine;
+  } else {
+    check_node_count(cfg.topology, cfg.nodes);
+    const std::string name = platform_file_name(cfg.machine, cfg.nodes, cfg.topology);
+    tmp = platform_path =
+        write_temp_platform(platform_xml(machine_spec(cfg.machine), cfg.nodes, cfg.topology), name);
+    platform_label = "platforms/" + name;
+  }
+
+  std::vector<std::string> args = {"zcube",
+                                   "--log=root.thres:critical",
+                                   "--cfg=network/model:CM02",
+                                   "--cfg=network/crosstraffic:0",
+                                   "--cfg=network/loopback-lat:0",
+                                   "--cfg=surf/precision:1e-24",
+                                   "--cfg=maxmin/precision:1e-12"};
+  std::vector<char*> argv;
+  for (auto& a : args)
+    argv.push_back(a.data());
+  int argc = int(argv.size());
+  sg::Engine e(&argc, argv.data());
+  try {
+    e.load_platform(platform_path);
+  } catch (const std::exception& ex) {
+    if (!tmp.empty()) std::filesystem::remove(tmp);
+    throw InputError(platform_label, 0, std::string("cannot load platform: ") + ex.what());
+  }
+  if (!tmp.empty()) std::filesystem::remove(tmp);
+  PlatformModel pm = read_platform(e, platform_label);
+  if (is_file && cfg.nodes != pm.nodes && cfg.nodes != 0)
+    throw UsageError("--nodes " + std::to_string(cfg.nodes) + " but " + platform_label +
+                     " models " + std::to_string(pm.nodes) + " nodes");
+  apply_overrides(cfg.overrides, pm, e);
+  const int P = pm.nodes;
+
+  std::vector<sg::Host*> hosts;
+  for (int r = 0; r < P; ++r)
+    hosts.push_back(e.host_by_name(node_host_name(r)));
+  hosts.push_back(e.host_by_name(kHostComputerName));
+  SimNetwork net(pm.net, pm.topology, P, cfg.fidelity, hosts);
+
+  std::vector<NodeStats> stats(P + 1);
+  std::vector<std::unique_ptr<SimComm>> comms;
+  std::vector<std::unique_ptr<SimContext>> ctxs;
+  std::vector<FrameImage> images;
+  for (int r = 0; r <= P; ++r) {
+    comms.push_back(std::make_unique<SimComm>(r, net, stats[r]));
+    const CostTable cost = r < P ? pm.cost[r] : pm.cost[0];
+    const double mem = r < P ? pm.memory[r] : 0.0; // the host computer is not memory-bound
+    ctxs.push_back(
+        std::make_unique<SimContext>(*comms[r], stats[r], scene, cfg.options, cost, mem, images));
+  }
+
+  std::string failure;
+  bool oom = false;
+  auto body = [&](int r, const std::function<void(NodeContext&)>& fn) {
+    comms[r]->attach();
+    try {
+      fn(*ctxs[r]);
+    } catch (const OutOfNodeMemory& ex) {
+      if (failure.empty()) failure = ex.what();
+      oom = true;
+      sg::Actor::kill_all();
+    } catch (const std::exception& ex) {
+      if (failure.empty()) failure = "node " + std::to_string(r) + ": " + ex.what();
+      sg::Actor::kill_all();
+    }
+    stats[r].finish_s = sg::Engine::get_clock();
+  };
+  for (int r = 0; r < P; ++r)
+    sg::Actor::create("node" + std::to_string(r), hosts[r], [&, r] { body(r, algo.node); });
+  if (algo.uses_host) sg::Actor::create("srm", hosts[P], [&] { body(P, algo.host); });
+  e.run();
+  const double vtime = sg::Engine::get_clock();
+
+  SimResult res;
+  res.ok = failure.empty();
+  res.error = failure;
+  nlohmann::json& j = res.report;
+  j["machine"] = pm.machine;
+  j["platform"] = platform_label;
+  j["nodes"] = P;
+  j["topology"] = topology_name(pm.topology);
+  j["fidelity"] = fidelity_name(cfg.fidelity);
+  j["algorithm"] = algo.name;
+  j["options"] = cfg.options.values;
+  j["frames"] = cfg.options.frames;
+  j["scene"] = {{"path", preloaded ? scene.path : cfg.scene_path},
+                {"triangles", scene.triangles.size()},
+                {"vertices", scene.vertices.size()},
+                {"width", scene.width},
+                {"height", scene.height}};
+  j["status"] = res.ok ? "ok" : (oom ? "out_of_memory" : "error");
+  if (!res.ok) j["error"] = failure;
+  j["virtual_time_s"] = vtime;
+
+  // Phases: per node totals, then max/mean/min over the nodes that entered the phase.
+  std::vector<std::string> order;
+  for (const auto& c : ctxs)
+    for (const auto& n : c->phase_order())
+      if (std::find(order.begin(), order.end(), n) == order.end()) order.push_back(n);
+  j["phases"] = nlohmann::json::array();
+  for (const auto& n : order) {
+    double mx = 0, sum = 0, mn = 1e300;
+    int cnt = 0;
+    for (const auto& c : ctxs) {
+      auto it = c->phase_totals().find(n);
+      if (it == c->phase_totals().end()) continue;
+      mx = std::max(mx, it->second);
+      mn = std::min(mn, it->second);
+      sum += it->second;
+      ++cnt;
+    }
+    j["phases"].push_back({{"name", n}, {"max_s", mx}, {"mean_s", sum / cnt}, {"min_s", mn}});
+  }
+  Counters total;
+  std::uint64_t msgs = 0, bytes = 0;
+  j["per_node"] = nlohmann::json::array();
+  for (int r = 0; r <= P; ++r) {
+    if (r == P && !algo.uses_host) break;
+    const NodeStats& s = stats[r];
+    total += ctxs[r]->work();
+    msgs += s.messages;
+    bytes += s.bytes_sent;
+    nlohmann::json ph = nlohmann::json::object();
+    for (const auto& [n, t] : ctxs[r]->phase_totals())
+      ph[n] = t;
+    j["per_node"].push_back({{"rank", r == P ? nlohmann::json("srm") : nlohmann::json(r)},
+                             {"busy_s", s.busy_s},
+                             {"comm_s", s.comm_s},
+                             {"idle_s", std::max(0.0, vtime - s.busy_s - s.comm_s)},
+                             {"bytes_sent", s.bytes_sent},
+                             {"messages", s.messages},
+                             {"peak_memory_bytes", s.peak_memory},
+                             {"phases", ph}});
+  }
+  j["communication"] = {{"messages", msgs}, {"bytes", bytes}};
+  j["counters"] = total;
+  j["load_imbalance"] = nullptr;
+  // Algorithm metrics (node 0's) merge into the top level, objects key by key.
+  for (auto& [k, v] : ctxs[0]->metrics().items()) {
+    if (v.is_object() && j.contains(k) && j[k].is_object())
+      j[k].update(v);
+    else
+      j[k] = v;
+  }
+  j["model"] = {
+      {"startup_short_s", pm.net.startup_short_s},
+      {"startup_long_s", pm.net.startup_long_s},
+      {"short_max_bytes", pm.net.short_max_bytes},
+      {"per_byte_s", pm.net.per_byte_s},
+      {"per_hop_s", pm.net.per_hop_s},
+      {"switching", pm.net.switching == Switching::Circuit ? "circuit" : "store-and-forward"},
+      {"node_memory_bytes", pm.memory.empty() ? 0.0 : pm.memory[0]}};
+
+  // Images, in frame order, against the host's sequential renderer.
+  std::sort(images.begin(), images.end(),
+            [](const FrameImage& a, const FrameImage& b) { return a.frame < b.frame; });
+  nlohmann::json img = nlohmann::json::object();
+  if (res.ok) {
+    bool identical = int(images.size()) == cfg.options.frames;
+    std::vector<std::string> shas;
+    for (int f = 0; f < int(images.size()); ++f) {
+      shas.push_back(image_sha256(images[f].image));
+      if (cfg.compare_with_sequential) {
+        Scene sf = scene;
+        sf.camera = camera_at_frame(scene.camera, f, cfg.options.frames);
+        identical = identical && image_sha256(render_scene(sf, 1).image) == shas.back();
+      }
+    }
+    img["sha256"] = shas.empty() ? nlohmann::json(nullptr) : nlohmann::json(shas.back());
+    if (shas.size() > 1) img["frames_sha256"] = shas;
+    img["identical_to_sequential"] =
+        cfg.compare_with_sequential ? nlohmann::json(identical) : nlohmann::json(nullptr);
+  }
+  j["image"] = img;
+  for (auto& fi : images)
+    res.images.push_back(std::move(fi.image));
+  j["host"] = {{"wall_time_s",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count()},
+               {"peak_rss_bytes", peak_rss_bytes()}};
+  return res;
+}
+
+nlohmann::json run_simulation_isolated(const SimConfig& cfg) {
+  int fds[2];
+  if (pipe(fds) != 0) throw std::runtime_error("pipe failed");
+  std::fflush(nullptr);
+  const pid_t pid = fork();
+  if (pid < 0) throw std::runtime_error("fork failed");
+  if (pid == 0) {
+    close(fds[0]);
+    std::string out;
+    try {
+      out = run_simulation(cfg).report.dump();
+    } catch (const std::exception& ex) {
+      out = nlohmann::json{{"status", "error"}, {"error", ex.what()}}.dump();
+    }
+    std::size_t off = 0;
+    while (off < out.size()) {
+      const ssize_t n = write(fds[1], out.data() + off, out.size() - off);
+      if (n <= 0) break;
+      off += std::size_t(n);
+    }
+    close(fds[1]);
+    _exit(0);
+  }
+  close(fds[1]);
+  std::string in;
+  char buf[65536];
+  for (ssize_t n; (n = read(fds[0], buf, sizeof buf)) > 0;)
+    in.append(buf, std::size_t(n));
+  close(fds[0]);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  if (in.empty())
+    return {{"status", "error"},
+            {"error", "simulation process died (status " + std::to_string(status) + ")"}};
+  return nlohmann::json::parse(in);
+}
+
+} // namespace zc

@@ -1,0 +1,53 @@
+#pragma once
+// One simulation: a platform (built-in machine or XML file) with what-if overrides, an algorithm,
+// a scene; runs the node (and host) actors on SimGrid and returns the report of DESIGN §4.
+// SimGrid allows one engine per process: run_simulation may be called once per process
+// (run_simulation_isolated forks for callers that need more, such as tests and sweeps).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "algo/algorithm.hpp"
+#include "machine/topology.hpp"
+#include "raster/framebuffer.hpp"
+#include "sim/fidelity.hpp"
+
+namespace zc {
+
+struct Overrides {
+  std::optional<double> latency_s;     // start-up, short and long messages
+  std::optional<double> bandwidth_Bps; // channel bandwidth (per-byte cost = 1/bandwidth)
+  std::optional<double> per_hop_s;
+  std::optional<double> cpu_scale;    // multiplies every CPU cost
+  std::optional<double> memory_bytes; // node memory
+  std::optional<double> cost_scale;   // multiplies every cost, CPU and network (stiffness checks)
+};
+
+struct SimConfig {
+  std::string machine = "ipsc2"; // built-in name or path to a platform XML
+  int nodes = 1;
+  Topology topology = Topology::Cube;
+  Fidelity fidelity = Fidelity::Circuit;
+  Overrides overrides;
+  std::string algorithm = "sequential";
+  AlgorithmOptions options;
+  std::string scene_path;
+  int width = 0, height = 0;           // > 0 overrides the scene's size
+  bool compare_with_sequential = true; // render on the host and compare images
+};
+
+struct SimResult {
+  nlohmann::json report;
+  std::vector<Framebuffer> images; // one per frame (node-delivered)
+  bool ok = true;                  // false: the run failed (e.g. out of node memory)
+  std::string error;
+};
+
+SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded = nullptr);
+
+// Runs in a forked child (fresh SimGrid engine) and returns its report; images are not returned.
+nlohmann::json run_simulation_isolated(const SimConfig& cfg);
+
+} // namespace zc
