@@ -24,13 +24,19 @@ void pingpong_node(NodeContext& ctx) {
   Comm& c = ctx.comm();
   const int P = c.size();
   const int from = std::stoi(ctx.options().get("from", "0"));
-  const int to_opt = std::stoi(ctx.options().get("to", "-1"));
+  const std::string to_opt = ctx.options().get("to", "-1");
   const auto sizes = parse_sizes(ctx.options().get("sizes", "0,64,100,101,1024,65536"));
-  if (from < 0 || from >= P || to_opt >= P || to_opt < -1)
-    throw UsageError("--from/--to must name nodes 0.." + std::to_string(P - 1));
   std::vector<int> targets;
-  for (int t = 0; t < P; ++t)
-    if (t != from && (to_opt < 0 || t == to_opt)) targets.push_back(t);
+  if (to_opt == "-1") {
+    for (int t = 0; t < P; ++t)
+      if (t != from) targets.push_back(t);
+  } else {
+    for (auto t : parse_sizes(to_opt))
+      targets.push_back(int(t));
+  }
+  for (int t : targets)
+    if (from < 0 || from >= P || t < 0 || t >= P || t == from)
+      throw UsageError("--from/--to must name two different nodes of 0.." + std::to_string(P - 1));
   auto results = nlohmann::json::array();
   for (int t : targets)
     for (std::size_t m : sizes) {

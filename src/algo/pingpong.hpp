@@ -4,6 +4,6 @@
 namespace zc {
 // The classic communication benchmark of these machines: node `from` sends m bytes to node `to`,
 // which answers with m bytes, for every size; the report's metrics list the one-way times.
-// Options: from, to (-1 = every node), sizes (comma-separated bytes), repeats.
+// Options: from, to (comma-separated nodes; -1 = every other node), sizes (comma-separated bytes).
 Algorithm pingpong_algorithm();
 } // namespace zc

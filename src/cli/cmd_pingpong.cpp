@@ -15,10 +15,11 @@ static int cmd_pingpong(std::vector<std::string> args) {
   SimFlags sf;
   sf.nodes = 2;
   sf.add_to(app);
-  int from = 0, to = -1;
+  int from = 0;
+  std::string to = "-1";
   std::string sizes = "0,64,100,101,1024,65536", report;
   app.add_option("--from", from, "sending node")->capture_default_str();
-  app.add_option("--to", to, "answering node (default: every other node)");
+  app.add_option("--to", to, "answering node(s), comma-separated (default: every other node)");
   app.add_option("--sizes", sizes, "message sizes in bytes")->capture_default_str();
   app.add_option("--report", report, "write the report JSON");
   if (int rc = parse(app, args); rc >= 0) return rc;
@@ -26,8 +27,7 @@ static int cmd_pingpong(std::vector<std::string> args) {
   sf.apply(cfg);
   cfg.algorithm = "pingpong";
   cfg.compare_with_sequential = false;
-  cfg.options.values = {
-      {"from", std::to_string(from)}, {"to", std::to_string(to)}, {"sizes", sizes}};
+  cfg.options.values = {{"from", std::to_string(from)}, {"to", to}, {"sizes", sizes}};
   SimResult r = run_simulation(cfg);
   if (!report.empty()) std::ofstream(report) << r.report.dump(2) << "\n";
   if (!r.ok) {

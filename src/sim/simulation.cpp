@@ -133,7 +133,7 @@ std::string write_temp_platform(const std::string& xml, const std::string& name)
 
 SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   const auto wall0 = std::chrono::steady_clock::now();
-  const Algorithm& algo = find_algorithm(cfg.algorithm);
+  const Algorithm& algo = cfg.custom ? *cfg.custom : find_algorithm(cfg.algorithm);
   for (const auto& [k, v] : cfg.options.values)
     if (std::find(algo.option_keys.begin(), algo.option_keys.end(), k) == algo.option_keys.end())
       throw UsageError("--" + k + " does not apply to algorithm " + algo.name);
@@ -289,6 +289,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
                              {"messages", s.messages},
                              {"peak_memory_bytes", s.peak_memory},
                              {"phases", ph}});
+    if (!ctxs[r]->metrics().empty()) j["per_node"].back()["metrics"] = ctxs[r]->metrics();
   }
   j["communication"] = {{"messages", msgs}, {"bytes", bytes}};
   j["counters"] = total;

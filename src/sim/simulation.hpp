@@ -3,6 +3,7 @@
 // a scene; runs the node (and host) actors on SimGrid and returns the report of DESIGN §4.
 // SimGrid allows one engine per process: run_simulation may be called once per process
 // (run_simulation_isolated forks for callers that need more, such as tests and sweeps).
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,6 +33,7 @@ struct SimConfig {
   Fidelity fidelity = Fidelity::Circuit;
   Overrides overrides;
   std::string algorithm = "sequential";
+  std::shared_ptr<const Algorithm> custom; // runs instead of `algorithm` (tests, benchmarks)
   AlgorithmOptions options;
   std::string scene_path;
   int width = 0, height = 0;           // > 0 overrides the scene's size

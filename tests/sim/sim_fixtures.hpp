@@ -1,0 +1,31 @@
+#pragma once
+// Running simulations from tests: every simulation in its own forked process (SimGrid allows one
+// engine per process), with a test-defined algorithm when needed.
+#include <functional>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "sim/simulation.hpp"
+
+namespace zc::test {
+
+inline SimConfig sim_config(const std::string& machine, int nodes, Topology topo, Fidelity fid) {
+  SimConfig c;
+  c.machine = machine;
+  c.nodes = nodes;
+  c.topology = topo;
+  c.fidelity = fid;
+  c.compare_with_sequential = false;
+  return c;
+}
+
+inline nlohmann::json run_custom(SimConfig cfg, std::function<void(NodeContext&)> node) {
+  auto a = std::make_shared<Algorithm>();
+  a->name = "test";
+  a->node = std::move(node);
+  cfg.custom = a;
+  return run_simulation_isolated(cfg);
+}
+
+} // namespace zc::test

@@ -1,0 +1,110 @@
+// Machine models: e-cube routes, platform files, units, closed-form message costs.
+#include <bit>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "machine/machine.hpp"
+#include "machine/platform_xml.hpp"
+#include "machine/topology.hpp"
+#include "machine/units.hpp"
+#include "util/error.hpp"
+
+using namespace zc;
+
+TEST(Topology, ECubeRoutesCorrectLowestBitFirst) {
+  for (int P : {1, 2, 4, 8, 16, 32})
+    for (int s = 0; s < P; ++s)
+      for (int d = 0; d < P; ++d) {
+        auto r = route(Topology::Cube, P, s, d);
+        ASSERT_EQ(int(r.size()), std::popcount(unsigned(s ^ d)));
+        int at = s, last_bit = -1;
+        for (auto [a, b] : r) {
+          ASSERT_EQ(a, at);
+          const unsigned diff = unsigned(a ^ b);
+          ASSERT_EQ(std::popcount(diff), 1); // a channel joins neighbours
+          const int bit = std::countr_zero(diff);
+          ASSERT_GT(bit, last_bit); // dimensions in increasing order
+          ASSERT_TRUE((s ^ d) & (1 << bit));
+          last_bit = bit;
+          at = b;
+        }
+        ASSERT_EQ(at, d);
+      }
+}
+
+TEST(Topology, RingTakesTheShorterWay) {
+  EXPECT_EQ(hops(Topology::Ring, 8, 0, 3), 3);
+  EXPECT_EQ(hops(Topology::Ring, 8, 0, 5), 3);
+  EXPECT_EQ(route(Topology::Ring, 8, 0, 5).front(), (std::pair<int, int>{0, 7}));
+  EXPECT_EQ(route(Topology::Ring, 8, 0, 4).front(), (std::pair<int, int>{0, 1})); // tie: clockwise
+  EXPECT_EQ(hops(Topology::Ring, 5, 4, 1), 2);
+}
+
+TEST(Topology, NonPowerOfTwoCubeIsAClearError) {
+  EXPECT_THROW(check_node_count(Topology::Cube, 12), UsageError);
+  EXPECT_THROW(check_node_count(Topology::Cube, 0), UsageError);
+  EXPECT_NO_THROW(check_node_count(Topology::Ring, 12));
+  try {
+    check_node_count(Topology::Cube, 6);
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("power of two"), std::string::npos);
+  }
+}
+
+TEST(Units, SimGridStyle) {
+  EXPECT_DOUBLE_EQ(parse_time("275us"), 275e-6);
+  EXPECT_DOUBLE_EQ(parse_time("1ms"), 1e-3);
+  EXPECT_DOUBLE_EQ(parse_time("0"), 0);
+  EXPECT_DOUBLE_EQ(parse_bandwidth("2.8MBps"), 2.8e6);
+  EXPECT_DOUBLE_EQ(parse_bandwidth("20Mbps"), 2.5e6);
+  EXPECT_DOUBLE_EQ(parse_bytes("16MiB"), 16.0 * 1048576);
+  EXPECT_DOUBLE_EQ(parse_bytes("4MB"), 4e6);
+  EXPECT_THROW(parse_time("fast"), UsageError);
+  EXPECT_THROW(parse_time("10parsecs"), UsageError);
+  EXPECT_THROW(parse_bandwidth("-1MBps"), UsageError);
+  EXPECT_EQ(format_double(0.1), "0.1");
+}
+
+TEST(Machine, MessageFormulas) {
+  const NetworkParams& dcm = machine_spec("ipsc860").net;
+  // Short and long protocols split at 100 bytes.
+  EXPECT_DOUBLE_EQ(dcm.message_time(100, 1), 75e-6 + 100 * 0.36e-6);
+  EXPECT_DOUBLE_EQ(dcm.message_time(101, 1), 136e-6 + 101 * 0.36e-6);
+  // Circuit switched: one start-up whatever the distance, plus the per-hop term.
+  EXPECT_NEAR(dcm.message_time(1000, 3) - dcm.message_time(1000, 1), 2 * 10e-6, 1e-15);
+  // Store-and-forward: the whole message again at every hop.
+  const NetworkParams& t800 = machine_spec("volvox").net;
+  EXPECT_DOUBLE_EQ(t800.message_time(1000, 3), 3 * t800.message_time(1000, 1));
+  EXPECT_THROW(machine_spec("cray"), UsageError);
+}
+
+TEST(Platforms, CommittedFilesAreCurrent) {
+  for (const auto& m : machine_names())
+    for (auto [topo, sizes] : {std::pair{Topology::Cube, std::vector<int>{1, 2, 4, 8, 16, 32}},
+                               std::pair{Topology::Ring, std::vector<int>{2, 4, 8, 16}}})
+      for (int p : sizes) {
+        const std::string path =
+            std::string(ZCUBE_SOURCE_DIR) + "/platforms/" + platform_file_name(m, p, topo);
+        std::ifstream f(path);
+        ASSERT_TRUE(f) << path << " is missing: run scripts/gen_platforms.sh";
+        std::stringstream ss;
+        ss << f.rdbuf();
+        EXPECT_EQ(ss.str(), platform_xml(machine_spec(m), p, topo))
+            << path << " differs from `zcube platform`: run scripts/gen_platforms.sh";
+      }
+}
+
+TEST(Platforms, EveryFigureIsAProperty) {
+  const std::string x = platform_xml(machine_spec("ipsc2"), 4, Topology::Cube);
+  for (const char* k : {"zcube.startup_short_s", "zcube.startup_long_s", "zcube.short_max_bytes",
+                        "zcube.per_byte_s", "zcube.per_hop_s", "zcube.switching", "memory_bytes",
+                        "cost_vertices_transformed", "cost_pixels_generated", "cost_merge_ops"})
+    EXPECT_NE(x.find(std::string("\"") + k + "\""), std::string::npos) << k;
+  EXPECT_NE(x.find("<host id=\"srm\""), std::string::npos);
+  // e-cube: node0 -> node3 crosses channel 0 first, then channel 1.
+  EXPECT_NE(x.find("<route src=\"node0\" dst=\"node3\" symmetrical=\"NO\">\n"
+                   "      <link_ctn id=\"ch-0-1\"/>\n      <link_ctn id=\"ch-1-3\"/>"),
+            std::string::npos);
+}
