@@ -1,4 +1,5 @@
 #include "algo/algorithm.hpp"
+#include "algo/elastic.hpp"
 #include "algo/pingpong.hpp"
 #include "algo/sequential.hpp"
 #include "util/error.hpp"
@@ -6,7 +7,8 @@
 namespace zc {
 
 const std::vector<Algorithm>& algorithms() {
-  static const std::vector<Algorithm> all = {sequential_algorithm(), pingpong_algorithm()};
+  static const std::vector<Algorithm> all = {sequential_algorithm(), elastic_algorithm(),
+                                             pingpong_algorithm()};
   return all;
 }
 

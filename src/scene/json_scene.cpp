@@ -9,10 +9,10 @@
 #include "geometry/camera.hpp"
 #include "scene/bezier.hpp"
 #include "scene/colors.hpp"
-#include "util/error.hpp"
 #include "scene/loaders.hpp"
 #include "scene/prng.hpp"
 #include "scene/text.hpp"
+#include "util/error.hpp"
 
 namespace zc {
 
@@ -274,8 +274,8 @@ void load_json_scene(Scene& scene, const std::string& path) {
     else
       cx.fail("texture_filter", "expected \"nearest\" or \"bilinear\"");
   }
-  if (!j.contains("objects") || !j["objects"].is_array() || j["objects"].empty())
-    cx.fail("objects", "expected a non-empty array");
+  // An empty array is a legal, empty scene (the background only).
+  if (!j.contains("objects") || !j["objects"].is_array()) cx.fail("objects", "expected an array");
   for (std::size_t i = 0; i < j["objects"].size(); ++i)
     parse_object(scene, cx, j["objects"][i], i);
 

@@ -7,9 +7,9 @@
 
 #include "geometry/camera.hpp"
 #include "scene/bezier.hpp"
-#include "util/error.hpp"
 #include "scene/loaders.hpp"
 #include "scene/text.hpp"
+#include "util/error.hpp"
 
 namespace zc {
 
@@ -40,7 +40,8 @@ Scene load_scene(const std::string& path, const LoadOptions& opt) {
   Scene s;
   s.path = path;
   const std::string ext = text::lower(std::filesystem::path(path).extension().string());
-  if (ext == ".json") {
+  const bool is_json = ext == ".json";
+  if (is_json) {
     load_json_scene(s, path);
   } else if (ext == ".obj") {
     append_obj(s, path, ObjectTransform{}, 0);
@@ -62,7 +63,9 @@ Scene load_scene(const std::string& path, const LoadOptions& opt) {
     throw InputError(path, 0,
                      "image size " + std::to_string(s.width) + "x" + std::to_string(s.height) +
                          " out of range (each side 1.." + std::to_string(kMaxImageSide) + ")");
-  if (s.triangles.empty()) throw InputError(path, 0, "the scene has no triangles");
+  // A JSON scene may say "objects": [] on purpose (an empty scene renders the background); a mesh
+  // or scene file without a single triangle is more likely a mistake.
+  if (s.triangles.empty() && !is_json) throw InputError(path, 0, "the scene has no triangles");
   return s;
 }
 
