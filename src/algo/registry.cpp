@@ -1,5 +1,6 @@
 #include "algo/algorithm.hpp"
 #include "algo/elastic.hpp"
+#include "algo/kurc_pixel_merging.hpp"
 #include "algo/pingpong.hpp"
 #include "algo/sequential.hpp"
 #include "util/error.hpp"
@@ -7,8 +8,12 @@
 namespace zc {
 
 const std::vector<Algorithm>& algorithms() {
-  static const std::vector<Algorithm> all = {sequential_algorithm(), elastic_algorithm(),
-                                             pingpong_algorithm()};
+  static const std::vector<Algorithm> all = [] {
+    std::vector<Algorithm> v = {sequential_algorithm(), elastic_algorithm(), pingpong_algorithm()};
+    for (auto& a : kurc_algorithms())
+      v.push_back(a);
+    return v;
+  }();
   return all;
 }
 

@@ -118,7 +118,6 @@ ActivePixels merge_active(const ActivePixels& a, const ActivePixels& b, Counters
       } else if (i == ie || b.pixels[j].x < a.pixels[i].x) {
         r.pixels.push_back(b.pixels[j++]);
       } else {
-        ++c.merge_ops;
         const WinningPixel& p = a.pixels[i];
         const WinningPixel& q = b.pixels[j];
         r.pixels.push_back(in_front(q.z, q.id, p.z, p.id) ? q : p);
@@ -128,6 +127,7 @@ ActivePixels merge_active(const ActivePixels& a, const ActivePixels& b, Counters
     }
     r.row_begin[y - a.y0 + 1] = std::uint32_t(r.pixels.size());
   }
+  c.merge_ops += b.pixels.size();
   return r;
 }
 
@@ -166,7 +166,8 @@ std::vector<std::uint8_t> serialize(const ActivePixels& a) {
   put(out, at, std::int32_t(a.width));
   put(out, at, std::int32_t(a.y0));
   put(out, at, std::int32_t(a.y1));
-  for (int y = a.y0; y < a.y1; ++y) put(out, at, a.row_count(y));
+  for (int y = a.y0; y < a.y1; ++y)
+    put(out, at, a.row_count(y));
   for (const auto& p : a.pixels) {
     put(out, at, p.x);
     std::memcpy(out.data() + at, p.rgb, 3);
@@ -175,6 +176,59 @@ std::vector<std::uint8_t> serialize(const ActivePixels& a) {
     put(out, at, p.id);
   }
   return out;
+}
+
+// Layout: u32 row count; per non-empty row (u32 y, u32 count); then the pixels as serialize().
+std::vector<std::uint8_t> serialize_sparse(const ActivePixels& a) {
+  std::uint32_t rows = 0;
+  for (int y = a.y0; y < a.y1; ++y)
+    rows += a.row_count(y) > 0;
+  std::vector<std::uint8_t> out(4 + 8 * std::size_t(rows) + kWirePixelBytes * a.pixels.size());
+  std::size_t at = 0;
+  put(out, at, rows);
+  for (int y = a.y0; y < a.y1; ++y)
+    if (a.row_count(y)) {
+      put(out, at, std::uint32_t(y));
+      put(out, at, a.row_count(y));
+    }
+  for (const auto& p : a.pixels) {
+    put(out, at, p.x);
+    std::memcpy(out.data() + at, p.rgb, 3);
+    at += 3;
+    put(out, at, p.z);
+    put(out, at, p.id);
+  }
+  return out;
+}
+
+ActivePixels deserialize_sparse(const std::uint8_t* p, std::size_t size, int width, int y0,
+                                int y1) {
+  const std::uint8_t* end = p + size;
+  ActivePixels a;
+  a.width = width;
+  a.y0 = y0;
+  a.y1 = y1;
+  a.row_begin.assign(std::size_t(y1 - y0) + 1, 0);
+  const std::uint32_t rows = get<std::uint32_t>(p, end);
+  std::vector<std::uint32_t> count(std::size_t(y1 - y0), 0);
+  int last = y0 - 1;
+  for (std::uint32_t i = 0; i < rows; ++i) {
+    const int y = int(get<std::uint32_t>(p, end));
+    if (y < y0 || y >= y1 || y <= last) throw std::runtime_error("active pixels: bad row");
+    count[y - y0] = get<std::uint32_t>(p, end);
+    last = y;
+  }
+  for (int y = y0; y < y1; ++y)
+    a.row_begin[y - y0 + 1] = a.row_begin[y - y0] + count[y - y0];
+  a.pixels.resize(a.row_begin.back());
+  for (auto& px : a.pixels) {
+    px.x = get<std::uint16_t>(p, end);
+    for (int k = 0; k < 3; ++k)
+      px.rgb[k] = get<std::uint8_t>(p, end);
+    px.z = get<float>(p, end);
+    px.id = get<std::uint32_t>(p, end);
+  }
+  return a;
 }
 
 ActivePixels deserialize_active(const std::uint8_t* p, std::size_t size) {

@@ -65,8 +65,31 @@ ActivePixels zbuffer_spans(const SpanLists& lists, const TriangleBatch& batch,
 ActivePixels slice_rows(const ActivePixels& a, int y0, int y1);
 
 // Merges two pixel sets over the same rows: per row a merge of two x-sorted lists, the nearer
-// pixel (depth, then lower id) winning at equal x. c.merge_ops counts the depth comparisons.
-ActivePixels merge_active(const ActivePixels& a, const ActivePixels& b, Counters& c);
+// pixel (depth, then lower id) winning at equal x. Every pixel of `received` is one merge
+// operation (c.merge_ops): compared with a retained pixel or inserted among them.
+ActivePixels merge_active(const ActivePixels& retained, const ActivePixels& received, Counters& c);
+
+// The rows of `a` for which keep(y) holds (the others emptied), over the same row range.
+template <class Keep> ActivePixels select_rows(const ActivePixels& a, Keep keep) {
+  ActivePixels r;
+  r.width = a.width;
+  r.y0 = a.y0;
+  r.y1 = a.y1;
+  r.row_begin.assign(a.row_begin.size(), 0);
+  for (int y = a.y0; y < a.y1; ++y) {
+    if (keep(y))
+      r.pixels.insert(r.pixels.end(), a.pixels.begin() + a.row_begin[y - a.y0],
+                      a.pixels.begin() + a.row_begin[y - a.y0 + 1]);
+    r.row_begin[y - a.y0 + 1] = std::uint32_t(r.pixels.size());
+  }
+  return r;
+}
+
+// Compact wire format for sparse row sets: only non-empty rows travel, as (row, count) pairs.
+std::vector<std::uint8_t> serialize_sparse(const ActivePixels& a);
+// Reads a sparse message into a pixel set over rows [y0, y1).
+ActivePixels deserialize_sparse(const std::uint8_t* data, std::size_t size, int width, int y0,
+                                int y1);
 
 // Writes a pixel set into a frame buffer holding (at least) its rows, without comparisons.
 void scatter_active(const ActivePixels& a, Framebuffer& fb);
