@@ -1,0 +1,88 @@
+// Kurc, Aykanat, Ozguc on the simulated iPSC/2: images, volumes and balance as the paper states.
+#include <gtest/gtest.h>
+
+#include "sim_fixtures.hpp"
+
+using namespace zc;
+using namespace zc::test;
+
+namespace {
+
+const char* kSchemes[] = {"zbuf-exc", "pair-rs",  "pair-hbp", "pair-even",
+                          "aapc-rs",  "aapc-hbp", "aapc-even"};
+const char* kPaperScenes[] = {"1pot", "2pot", "4pot_1", "4pot_2", "8pot_1", "8pot_2"};
+
+std::string kurc_scene(const std::string& name) {
+  return std::string(ZCUBE_SOURCE_DIR) + "/scenes/kurc/" + name + ".json";
+}
+
+nlohmann::json kurc(const std::string& scheme, const std::string& scene, int P, int size,
+                    bool compare = true) {
+  SimConfig c = sim_config("ipsc2", P, Topology::Cube, Fidelity::Circuit);
+  c.algorithm = scheme;
+  c.scene_path = scene;
+  c.width = c.height = size;
+  c.compare_with_sequential = compare;
+  c.overrides.memory_bytes = 64.0 * 1048576; // the mechanics, not the 4 MB limit, are tested here
+  return run_simulation_isolated(c);
+}
+
+} // namespace
+
+TEST(Kurc, EverySchemeOnEveryCubeGivesTheSequentialImage) {
+  for (const char* scene : {"1pot", "2pot"})
+    for (const char* s : kSchemes)
+      for (int P : {1, 2, 4, 8, 16, 32}) {
+        auto r = kurc(s, kurc_scene(scene), P, 96);
+        ASSERT_EQ(r["status"], "ok") << r.dump();
+        EXPECT_EQ(r["image"]["identical_to_sequential"], true) << s << " P=" << P << " " << scene;
+      }
+}
+
+TEST(Kurc, VolumesAndBalanceOnThePapersScenes) {
+  double zbuf_volume = -1;
+  for (const char* scene : kPaperScenes) {
+    std::map<std::string, nlohmann::json> r;
+    for (const char* s : {"zbuf-exc", "pair-rs", "pair-hbp", "aapc-rs", "aapc-hbp"}) {
+      r[s] = kurc(s, kurc_scene(scene), 16, 400, false);
+      ASSERT_EQ(r[s]["status"], "ok") << r[s].dump();
+    }
+    auto vol = [&](const char* s) {
+      return r[s]["communication"]["concurrent_volume_bytes"].get<double>();
+    };
+    auto imb = [&](const char* s) { return r[s]["load_imbalance"].get<double>(); };
+    // Fig. 1: AAPC moves less than PAIR (no store-and-forward of pixels).
+    EXPECT_LE(vol("aapc-rs"), vol("pair-rs")) << scene;
+    EXPECT_LE(vol("aapc-hbp"), vol("pair-hbp")) << scene;
+    // Fig. 2: heuristic bin packing balances the merging better than recursive subdivision.
+    EXPECT_LE(imb("pair-hbp"), imb("pair-rs")) << scene;
+    EXPECT_LE(imb("aapc-hbp"), imb("aapc-rs")) << scene;
+    // Active pixel merging moves far less than full z-buffer merging.
+    EXPECT_LT(vol("pair-rs") * 4, vol("zbuf-exc")) << scene;
+    // ZBUF-EXC exchanges every location: its volume does not depend on the scene.
+    if (zbuf_volume < 0) zbuf_volume = vol("zbuf-exc");
+    EXPECT_EQ(vol("zbuf-exc"), zbuf_volume) << scene;
+    // Table 2: the modified scanline z-buffer beats the full one in the local z-buffer phase.
+    auto phase = [&](const char* s, const char* p) {
+      for (const auto& x : r[s]["phases"])
+        if (x["name"] == p) return x["max_s"].get<double>();
+      return -1.0;
+    };
+    EXPECT_LT(phase("pair-rs", "local_zbuffer"), phase("zbuf-exc", "local_zbuffer")) << scene;
+    EXPECT_LT(phase("pair-rs", "pixel_merging"), phase("zbuf-exc", "pixel_merging")) << scene;
+  }
+  // 400 x 400 locations, 11 bytes each, halved over 4 stages: 200 + 100 + 50 + 25 rows.
+  EXPECT_EQ(zbuf_volume, 400.0 * 11 * (200 + 100 + 50 + 25));
+}
+
+TEST(Kurc, FullZBufferOfA640ScreenDoesNotFitAFourMegabyteNode) {
+  SimConfig c = sim_config("ipsc2", 16, Topology::Cube, Fidelity::Circuit);
+  c.algorithm = "zbuf-exc";
+  c.scene_path = kurc_scene("1pot");
+  c.width = c.height = 640;
+  auto r = run_simulation_isolated(c);
+  EXPECT_EQ(r["status"], "out_of_memory") << r.dump();
+  EXPECT_NE(r["error"].get<std::string>().find("full z-buffer"), std::string::npos);
+  c.algorithm = "aapc-hbp";
+  EXPECT_EQ(run_simulation_isolated(c)["status"], "ok");
+}
