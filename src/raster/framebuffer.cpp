@@ -1,6 +1,7 @@
 #include "raster/framebuffer.hpp"
 
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 namespace zc {
@@ -12,16 +13,24 @@ static std::uint8_t to_byte(float c) {
 
 Framebuffer::Framebuffer(int width, RowSet rows, glm::vec3 background)
     : width_(width), rows_(rows) {
-  const std::size_t n = std::size_t(width) * std::size_t(rows.count());
-  rgb_.resize(3 * n);
+  clear(background);
+}
+
+void Framebuffer::clear(glm::vec3 background) {
+  const std::size_t n = std::size_t(width_) * std::size_t(rows_.count());
   depth_.assign(n, std::numeric_limits<float>::infinity());
   ids_.assign(n, kNoTriangle);
   const std::uint8_t bg[3] = {to_byte(background.x), to_byte(background.y), to_byte(background.z)};
-  for (std::size_t i = 0; i < n; ++i) {
-    rgb_[3 * i] = bg[0];
-    rgb_[3 * i + 1] = bg[1];
-    rgb_[3 * i + 2] = bg[2];
+  if (bg[0] == bg[1] && bg[1] == bg[2]) {
+    rgb_.assign(3 * n, bg[0]); // a grey background (black, usually) is one memset
+    return;
   }
+  rgb_.resize(3 * n);
+  const std::size_t row = 3 * std::size_t(width_);
+  for (std::size_t i = 0; i < std::size_t(width_); ++i)
+    std::memcpy(&rgb_[3 * i], bg, 3);
+  for (std::size_t r = 1; r < std::size_t(rows_.count()); ++r)
+    std::memcpy(&rgb_[r * row], rgb_.data(), row);
 }
 
 std::uint64_t Framebuffer::merge(const Framebuffer& o) {

@@ -39,6 +39,10 @@ public:
   Framebuffer() = default;
   Framebuffer(int width, RowSet rows, glm::vec3 background);
 
+  // Back to the background, keeping the memory (a renderer drawing many frames pays no page
+  // faults for a new buffer each time).
+  void clear(glm::vec3 background);
+
   int width() const { return width_; }
   const RowSet& rows() const { return rows_; }
   std::size_t index(int x, int y) const { return std::size_t(rows_.local(y)) * width_ + x; }

@@ -12,8 +12,8 @@ namespace zc {
 NodeRenderer::NodeRenderer(const Scene& scene) : NodeRenderer(scene, scene.camera) {}
 
 NodeRenderer::NodeRenderer(const Scene& scene, const Camera& camera)
-    : view_(make_view(scene, camera)), shade_(ShadeContext::of(scene)), background_(scene.background),
-      cull_back_(scene.cull == CullMode::Back) {}
+    : view_(make_view(scene, camera)), shade_(ShadeContext::of(scene)),
+      background_(scene.background), cull_back_(scene.cull == CullMode::Back) {}
 
 void NodeRenderer::setup(std::uint32_t id, const Triangle& tri, const ProjectedVertex* const pv[3],
                          const glm::vec2* const uv[3], TriangleBatch& out, Counters& c) const {
@@ -40,9 +40,20 @@ template <class F> void run_workers(int n, F&& f) {
 
 RenderResult render_scene(const Scene& scene, int threads) {
   const auto t0 = std::chrono::steady_clock::now();
+  RenderResult res;
+  res.counters = render_scene_into(scene, threads, res.image);
+  res.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return res;
+}
+
+Counters render_scene_into(const Scene& scene, int threads, Framebuffer& image) {
   threads = std::max(1, threads);
   const NodeRenderer nr(scene);
-  RenderResult res{nr.make_framebuffer(RowSet::all(scene.height)), {}, 0};
+  if (image.width() == scene.width && image.rows().begin == 0 && image.rows().stride == 1 &&
+      image.rows().end == scene.height)
+    image.clear(scene.background);
+  else
+    image = nr.make_framebuffer(RowSet::all(scene.height));
   std::vector<Counters> tc(threads);
 
   // 1. Vertex stage, contiguous chunks per thread.
@@ -84,16 +95,16 @@ RenderResult render_scene(const Scene& scene, int threads) {
         for (const auto& b : batches)
           for (const auto& t : b.tris)
             if (t.ymax >= rows.begin && t.ymin < rows.end)
-              draw_triangle(t, b, nr.shade(), rows, res.image, tc[w]);
+              draw_triangle(t, b, nr.shade(), rows, image, tc[w]);
       }
     });
   }
+  Counters total;
   for (const auto& c : tc)
-    res.counters += c;
-  res.counters.pixels_cleared = std::uint64_t(scene.width) * scene.height;
-  res.counters.pixels_final = res.image.covered();
-  res.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return res;
+    total += c;
+  total.pixels_cleared = std::uint64_t(scene.width) * scene.height;
+  total.pixels_final = image.covered();
+  return total;
 }
 
 } // namespace zc

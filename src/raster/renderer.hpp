@@ -58,5 +58,7 @@ struct RenderResult {
 // interleaved bands of rows (no lock per pixel; Malerich's data-parallel variant), so the image
 // and the counters are identical for every thread count.
 RenderResult render_scene(const Scene& scene, int threads = 1);
+// The same into `image` (resized on first use, then only cleared): for repeated frames.
+Counters render_scene_into(const Scene& scene, int threads, Framebuffer& image);
 
 } // namespace zc
