@@ -1,4 +1,5 @@
 #include "algo/algorithm.hpp"
+#include "algo/blazek_methods.hpp"
 #include "algo/elastic.hpp"
 #include "algo/kurc_pixel_merging.hpp"
 #include "algo/pingpong.hpp"
@@ -11,6 +12,8 @@ const std::vector<Algorithm>& algorithms() {
   static const std::vector<Algorithm> all = [] {
     std::vector<Algorithm> v = {sequential_algorithm(), elastic_algorithm(), pingpong_algorithm()};
     for (auto& a : kurc_algorithms())
+      v.push_back(a);
+    for (auto& a : blazek_algorithms())
       v.push_back(a);
     return v;
   }();

@@ -57,6 +57,7 @@ CostTable i386_costs() {
   t.bytes_packed = 0.25e-6;
   t.triangles_estimated = 15e-6;
   t.rows_scanned = 3e-6;
+  t.triangles_tessellated = 60e-6; // vertex + normal generation of one polygon
   return t;
 }
 

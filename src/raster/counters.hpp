@@ -26,6 +26,7 @@ struct Counters {
   std::uint64_t bytes_packed = 0;         // bytes copied into or out of message buffers
   std::uint64_t triangles_estimated = 0;  // per-triangle load estimates (Charles et al. §5)
   std::uint64_t rows_scanned = 0;         // per-row passes: prefix scans, partitions, row counts
+  std::uint64_t triangles_tessellated = 0; // polygons made from primitive descriptions (Blazek)
 
   Counters& operator+=(const Counters& o);
   friend Counters operator+(Counters a, const Counters& b) { return a += b; }
@@ -53,6 +54,7 @@ void to_json(nlohmann::json& j, const Counters& c);
   X(merge_ops)                                                                                     \
   X(bytes_packed)                                                                                  \
   X(triangles_estimated)                                                                           \
-  X(rows_scanned)
+  X(rows_scanned)                                                                                  \
+  X(triangles_tessellated)
 
 } // namespace zc

@@ -168,8 +168,13 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
                                    "--cfg=network/model:CM02",
                                    "--cfg=network/crosstraffic:0",
                                    "--cfg=network/loopback-lat:0",
-                                   "--cfg=surf/precision:1e-24",
                                    "--cfg=maxmin/precision:1e-12"};
+  // SimGrid's timing precision is absolute: it must stay above the rounding step of the clock
+  // (1e-12 s is, up to ~4000 s of virtual time; 1e-24 made SimGrid miss wake-ups and report a
+  // deadlock) and below the shortest events. It scales with --cost-scale, so scaled runs are the
+  // same computation with every number multiplied by k.
+  args.push_back("--cfg=surf/precision:" +
+                 format_double(1e-12 * cfg.overrides.cost_scale.value_or(1.0)));
   std::vector<char*> argv;
   for (auto& a : args)
     argv.push_back(a.data());

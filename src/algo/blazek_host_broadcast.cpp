@@ -1,0 +1,80 @@
+// Blazek 1991, ch. V "Host Broadcast": every object goes to every node (the host hands the
+// descriptions to node 0, which broadcasts them hierarchically in log2 P steps); each node keeps
+// only what touches its rows and renders it; rows are strips of H/P, or interleaved (row y to
+// node y mod P); the partial images are pasted.
+#include <cstring>
+
+#include "algo/blazek_common.hpp"
+#include "algo/blazek_methods.hpp"
+#include "comm/collectives.hpp"
+#include "comm/wire.hpp"
+#include "util/error.hpp"
+
+namespace zc::blazek {
+
+void host_broadcast_host(NodeContext& ctx) {
+  const Scene& s = ctx.scene();
+  check_scene(s);
+  auto ph = ctx.phase("distribute");
+  // All descriptions in one message: u32 count, then (u32 size, bytes) per object.
+  Bytes all;
+  const std::uint32_t n = std::uint32_t(s.objects.size());
+  append(all, &n, 1);
+  for (std::size_t o = 0; o < s.objects.size(); ++o) {
+    Bytes b = encode_object(s, o);
+    const std::uint32_t sz = std::uint32_t(b.size());
+    append(all, &sz, 1);
+    append(all, b.data(), b.size());
+  }
+  Counters k;
+  k.bytes_packed = all.size();
+  ctx.charge(k);
+  ctx.comm().send(0, kTagHost, std::move(all));
+}
+
+void host_broadcast_node(NodeContext& ctx) {
+  check_scene(ctx.scene());
+  Comm& c = ctx.comm();
+  const int P = c.size(), r = c.rank();
+  const std::string lines = ctx.options().get("lines", "strips");
+  if (lines != "strips" && lines != "interleaved")
+    throw UsageError("--lines must be strips or interleaved");
+  const NodeRenderer nr(ctx.scene());
+  const int H = nr.height();
+  Bytes all;
+  {
+    auto ph = ctx.phase("broadcast");
+    if (r == 0) all = c.recv(c.host_rank(), kTagHost);
+    all = coll::broadcast(c, 0, std::move(all));
+  }
+  const RowSet rows = lines == "strips" ? RowSet::band(int(std::int64_t(r) * H / P),
+                                                       int(std::int64_t(r + 1) * H / P))
+                                        : RowSet::interleaved(r, P, H);
+  Framebuffer fb = nr.make_framebuffer(rows);
+  ctx.alloc(double(fb.bytes() + all.size()), "rows frame buffer and scene");
+  {
+    auto ph = ctx.phase("render");
+    std::uint32_t n = 0, at = 4;
+    std::memcpy(&n, all.data(), 4);
+    for (std::uint32_t o = 0; o < n; ++o) {
+      std::uint32_t sz;
+      std::memcpy(&sz, all.data() + at, 4);
+      Bytes b(all.begin() + at + 4, all.begin() + at + 4 + sz);
+      at += 4 + sz;
+      std::vector<Poly> keep;
+      Counters k;
+      for (const Poly& p : object_polygons(ctx, b)) {
+        int y0, y1;
+        k.triangles_estimated += 1;
+        if (!polygon_rows(nr, p, y0, y1)) continue;
+        const int first = rows.first_from(y0);
+        if (first <= y1 && first < rows.end) keep.push_back(p);
+      }
+      ctx.charge(k);
+      render_polygons(ctx, nr, keep, fb);
+    }
+  }
+  paste_at_node0(ctx, nr, fb);
+}
+
+} // namespace zc::blazek

@@ -1,0 +1,37 @@
+#include "algo/blazek_methods.hpp"
+
+namespace zc {
+namespace blazek {
+void host_initiated_host(NodeContext&);
+void host_initiated_node(NodeContext&);
+void describe_round_robin(NodeContext&);
+void node_initiated_node(NodeContext&);
+void object_forwarding_node(NodeContext&);
+void host_broadcast_host(NodeContext&);
+void host_broadcast_node(NodeContext&);
+} // namespace blazek
+
+std::vector<Algorithm> blazek_algorithms() {
+  auto make = [](const char* name, const char* summary, auto host, auto node,
+                 std::vector<std::string> keys) {
+    Algorithm a;
+    a.name = name;
+    a.summary = summary;
+    a.uses_host = true;
+    a.host = host;
+    a.node = node;
+    a.option_keys = std::move(keys);
+    return a;
+  };
+  return {make("host-initiated",
+               "Blazek 1991: host tessellates, polygon packets, hierarchical merge",
+               blazek::host_initiated_host, blazek::host_initiated_node, {"packet"}),
+          make("node-initiated", "Blazek 1991: descriptions to nodes, node tessellation, merge",
+               blazek::describe_round_robin, blazek::node_initiated_node, {}),
+          make("object-forwarding", "Blazek 1991: node strips, objects forwarded to strip owners",
+               blazek::describe_round_robin, blazek::object_forwarding_node, {"forward"}),
+          make("host-broadcast", "Blazek 1991: every object to every node, strips or interleaved",
+               blazek::host_broadcast_host, blazek::host_broadcast_node, {"lines"})};
+}
+
+} // namespace zc

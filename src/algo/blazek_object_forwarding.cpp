@@ -1,0 +1,91 @@
+// Blazek 1991, ch. V "Node Initiated with Object Forwarding": node k owns the strip of rows
+// [kH/P, (k+1)H/P). Descriptions arrive round-robin from the host; a node renders what falls in
+// its strip and forwards to the owners of the other strips what falls there: the description to
+// be re-tessellated (--forward object) or the tessellated polygons (--forward polygons). Strips
+// are pasted, not merged.
+#include <set>
+
+#include "algo/blazek_common.hpp"
+#include "algo/blazek_methods.hpp"
+#include "comm/collectives.hpp"
+#include "comm/wire.hpp"
+#include "util/error.hpp"
+
+namespace zc::blazek {
+
+void object_forwarding_node(NodeContext& ctx) {
+  check_scene(ctx.scene());
+  Comm& c = ctx.comm();
+  const int P = c.size(), r = c.rank();
+  const std::string mode = ctx.options().get("forward", "object");
+  if (mode != "object" && mode != "polygons")
+    throw UsageError("--forward must be object or polygons");
+  const NodeRenderer nr(ctx.scene());
+  const int H = nr.height();
+  auto strip_of = [&](int y) { return int(std::int64_t(y) * P / H); };
+  const RowSet mine = RowSet::band(int(std::int64_t(r) * H / P), int(std::int64_t(r + 1) * H / P));
+  Framebuffer fb = nr.make_framebuffer(mine);
+  ctx.alloc(double(fb.bytes()), "strip frame buffer");
+  std::uint64_t forwarded = 0;
+  std::vector<SendHandle> sends;
+  {
+    auto ph = ctx.phase("render");
+    for (;;) {
+      Bytes b = c.recv(c.host_rank(), kTagHost);
+      if (is_end(b)) break;
+      const auto polys = object_polygons(ctx, b);
+      std::vector<Poly> own;
+      std::vector<std::vector<Poly>> others(P);
+      std::set<int> touched;
+      Counters k;
+      for (const Poly& p : polys) {
+        int y0, y1;
+        k.triangles_estimated += 1;
+        if (!polygon_rows(nr, p, y0, y1)) continue;
+        for (int s = strip_of(y0); s <= strip_of(y1); ++s) {
+          if (s == r)
+            own.push_back(p);
+          else {
+            others[s].push_back(p);
+            touched.insert(s);
+          }
+        }
+      }
+      ctx.charge(k);
+      for (int s : touched) {
+        ++forwarded;
+        sends.push_back(c.isend(s, kTagForward, mode == "object" ? b : pack(others[s])));
+      }
+      render_polygons(ctx, nr, own, fb);
+    }
+    for (int n = 0; n < P; ++n)
+      if (n != r) sends.push_back(c.isend(n, kTagForward, Bytes{}));
+    // Forwarded work, until every other node has said it is done.
+    for (int ends = 0; ends < P - 1;) {
+      Bytes b = c.recv(kAnySource, kTagForward);
+      if (is_end(b)) {
+        ++ends;
+        continue;
+      }
+      std::vector<Poly> polys = mode == "object" ? object_polygons(ctx, b) : unpack<Poly>(b);
+      if (mode == "object") {
+        std::vector<Poly> own;
+        for (const Poly& p : polys) {
+          int y0, y1;
+          if (polygon_rows(nr, p, y0, y1) && strip_of(y0) <= r && r <= strip_of(y1))
+            own.push_back(p);
+        }
+        polys.swap(own);
+      }
+      render_polygons(ctx, nr, polys, fb);
+    }
+    for (auto& h : sends)
+      h->wait();
+  }
+  auto total =
+      coll::reduce(c, 0, std::vector<std::int64_t>{std::int64_t(forwarded)}, coll::Op::Sum);
+  if (r == 0) ctx.metrics()["blazek"] = {{"forwarded_messages", total[0]}, {"forward", mode}};
+  paste_at_node0(ctx, nr, fb);
+}
+
+} // namespace zc::blazek
