@@ -1,5 +1,6 @@
 #include "algo/blazek_common.hpp"
 
+#include <cmath>
 #include <cstring>
 
 #include "comm/collectives.hpp"
@@ -76,6 +77,32 @@ std::vector<Poly> object_polygons(NodeContext& ctx, const Bytes& msg) {
   c.triangles_tessellated = out.size();
   ctx.charge(c);
   return out;
+}
+
+bool object_may_touch(const NodeRenderer& nr, const Bytes& msg, const RowSet& rows,
+                      std::uint32_t& triangles) {
+  if (msg.size() < sizeof(ObjectHeader)) return true;
+  ObjectHeader h;
+  std::memcpy(&h, msg.data(), sizeof h);
+  triangles = h.triangle_count;
+  if (h.is_mesh) return true;
+  const ObjectSpec spec = parse_object_text(
+      std::string(reinterpret_cast<const char*>(msg.data() + sizeof h), msg.size() - sizeof h));
+  if (spec.kind == "bezier" || spec.kind == "mesh") return true;
+  const glm::dmat4 m = nr.view().view_proj * spec.xf.to_matrix();
+  double ylo = 1e300, yhi = -1e300;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::dvec4 c =
+        m * glm::dvec4(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1, 1);
+    if (!(c.w > 1e-9) || !(c.z >= -c.w)) return true; // behind or across the near plane
+    const double sy = (0.5 - 0.5 * c.y / c.w) * nr.height();
+    ylo = std::min(ylo, sy);
+    yhi = std::max(yhi, sy);
+  }
+  // Rows whose centres fall in [ylo, yhi], widened by a row for rounding.
+  const int y0 = int(std::floor(ylo)) - 1, y1 = int(std::ceil(yhi)) + 1;
+  const int first = rows.first_from(std::max(y0, 0));
+  return first <= y1 && first < rows.end;
 }
 
 bool polygon_rows(const NodeRenderer& nr, const Poly& p, int& y0, int& y1) {

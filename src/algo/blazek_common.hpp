@@ -34,6 +34,12 @@ std::vector<Poly> host_polygons(const Scene& s, std::size_t object, Counters& c)
 void render_polygons(NodeContext& ctx, const NodeRenderer& nr, const std::vector<Poly>& polys,
                      Framebuffer& fb);
 
+// Whether an object (its message) can touch any row of `rows`, judged from its description's
+// bounding box alone (primitives fit [-1, 1]^3 before their transform). `triangles` receives its
+// polygon count. Conservative: true when unsure (meshes, Bezier patches, near-plane crossings).
+bool object_may_touch(const NodeRenderer& nr, const Bytes& msg, const RowSet& rows,
+                      std::uint32_t& triangles);
+
 // Rows [y0, y1] a polygon can touch (false: none).
 bool polygon_rows(const NodeRenderer& nr, const Poly& p, int& y0, int& y1);
 

@@ -63,6 +63,15 @@ void host_broadcast_node(NodeContext& ctx) {
       at += 4 + sz;
       std::vector<Poly> keep;
       Counters k;
+      std::uint32_t count = 0;
+      if (!object_may_touch(nr, b, rows, count)) {
+        // The node tessellates and tests the object all the same (the method does): charge the
+        // same counts without computing polygons that cannot land in its rows.
+        k.triangles_tessellated = count;
+        k.triangles_estimated = count;
+        ctx.charge(k);
+        continue;
+      }
       for (const Poly& p : object_polygons(ctx, b)) {
         int y0, y1;
         k.triangles_estimated += 1;
