@@ -129,6 +129,28 @@ void render_polygons(NodeContext& ctx, const NodeRenderer& nr, const std::vector
   ctx.charge(c);
 }
 
+void render_host_messages_then_merge(
+    NodeContext& ctx, const std::function<std::vector<Poly>(const Bytes&)>& polygons_of) {
+  check_scene(ctx.scene());
+  const NodeRenderer nr(ctx.scene());
+  Framebuffer fb = nr.make_framebuffer(RowSet::all(nr.height()));
+  ctx.alloc(double(fb.bytes()), "frame buffer");
+  {
+    auto ph = ctx.phase("render");
+    Counters k;
+    k.pixels_cleared = fb.pixel_count();
+    ctx.charge(k);
+    for (;;) {
+      Bytes b = ctx.comm().recv(ctx.comm().host_rank(), kTagHost);
+      if (is_end(b)) break;
+      ctx.alloc(double(b.size()), "host message");
+      render_polygons(ctx, nr, polygons_of(b), fb);
+      ctx.release(double(b.size()));
+    }
+  }
+  hierarchical_merge(ctx, std::move(fb));
+}
+
 void hierarchical_merge(NodeContext& ctx, Framebuffer fb) {
   Comm& c = ctx.comm();
   const int r = c.rank();

@@ -2,6 +2,7 @@
 // Pieces shared by Blazek's four decompositions (thesis ch. V): what travels between the host
 // (SRM) and the nodes, node-side tessellation and rendering, the hierarchical merge of Algorithm 4
 // and the pasting of strips.
+#include <functional>
 #include <vector>
 
 #include "algo/algorithm.hpp"
@@ -42,6 +43,12 @@ bool object_may_touch(const NodeRenderer& nr, const Bytes& msg, const RowSet& ro
 
 // Rows [y0, y1] a polygon can touch (false: none).
 bool polygon_rows(const NodeRenderer& nr, const Poly& p, int& y0, int& y1);
+
+// The node side of host initiated and node initiated: a full frame buffer, every host message
+// until the end marker turned into polygons by `polygons_of` and rendered, then the hierarchical
+// merge.
+void render_host_messages_then_merge(
+    NodeContext& ctx, const std::function<std::vector<Poly>(const Bytes&)>& polygons_of);
 
 // Algorithm 4 / Figure 10: log2 P steps; at step i the active nodes with bit i set send their
 // frame buffer to the neighbour over channel i, which keeps the nearer pixel. Node 0 ends with

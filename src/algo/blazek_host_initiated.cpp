@@ -52,24 +52,7 @@ void host_initiated_host(NodeContext& ctx) {
 }
 
 void host_initiated_node(NodeContext& ctx) {
-  check_scene(ctx.scene());
-  const NodeRenderer nr(ctx.scene());
-  Framebuffer fb = nr.make_framebuffer(RowSet::all(nr.height()));
-  ctx.alloc(double(fb.bytes()), "frame buffer");
-  {
-    auto ph = ctx.phase("render");
-    Counters k;
-    k.pixels_cleared = fb.pixel_count();
-    ctx.charge(k);
-    for (;;) {
-      Bytes b = ctx.comm().recv(ctx.comm().host_rank(), kTagHost);
-      if (is_end(b)) break;
-      ctx.alloc(double(b.size()), "polygon packet");
-      render_polygons(ctx, nr, unpack<Poly>(b), fb);
-      ctx.release(double(b.size()));
-    }
-  }
-  hierarchical_merge(ctx, std::move(fb));
+  render_host_messages_then_merge(ctx, [&](const Bytes& b) { return unpack<Poly>(b); });
 }
 
 } // namespace zc::blazek

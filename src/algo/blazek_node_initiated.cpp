@@ -24,22 +24,7 @@ void describe_round_robin(NodeContext& ctx) {
 }
 
 void node_initiated_node(NodeContext& ctx) {
-  check_scene(ctx.scene());
-  const NodeRenderer nr(ctx.scene());
-  Framebuffer fb = nr.make_framebuffer(RowSet::all(nr.height()));
-  ctx.alloc(double(fb.bytes()), "frame buffer");
-  {
-    auto ph = ctx.phase("render");
-    Counters k;
-    k.pixels_cleared = fb.pixel_count();
-    ctx.charge(k);
-    for (;;) {
-      Bytes b = ctx.comm().recv(ctx.comm().host_rank(), kTagHost);
-      if (is_end(b)) break;
-      render_polygons(ctx, nr, object_polygons(ctx, b), fb);
-    }
-  }
-  hierarchical_merge(ctx, std::move(fb));
+  render_host_messages_then_merge(ctx, [&](const Bytes& b) { return object_polygons(ctx, b); });
 }
 
 } // namespace zc::blazek

@@ -156,6 +156,23 @@ template <class T> T get(const std::uint8_t*& p, const std::uint8_t* end) {
   p += sizeof(T);
   return v;
 }
+// One pixel on the wire: x(2) rgb(3) z(4) id(4) = kWirePixelBytes.
+void put_pixel(std::vector<std::uint8_t>& out, std::size_t& at, const WinningPixel& p) {
+  put(out, at, p.x);
+  std::memcpy(out.data() + at, p.rgb, 3);
+  at += 3;
+  put(out, at, p.z);
+  put(out, at, p.id);
+}
+WinningPixel get_pixel(const std::uint8_t*& p, const std::uint8_t* end) {
+  WinningPixel px;
+  px.x = get<std::uint16_t>(p, end);
+  for (int k = 0; k < 3; ++k)
+    px.rgb[k] = get<std::uint8_t>(p, end);
+  px.z = get<float>(p, end);
+  px.id = get<std::uint32_t>(p, end);
+  return px;
+}
 } // namespace
 
 // Layout: int32 width, y0, y1; uint32 count per row; then per pixel x(2) rgb(3) z(4) id(4).
@@ -168,13 +185,8 @@ std::vector<std::uint8_t> serialize(const ActivePixels& a) {
   put(out, at, std::int32_t(a.y1));
   for (int y = a.y0; y < a.y1; ++y)
     put(out, at, a.row_count(y));
-  for (const auto& p : a.pixels) {
-    put(out, at, p.x);
-    std::memcpy(out.data() + at, p.rgb, 3);
-    at += 3;
-    put(out, at, p.z);
-    put(out, at, p.id);
-  }
+  for (const auto& p : a.pixels)
+    put_pixel(out, at, p);
   return out;
 }
 
@@ -191,13 +203,8 @@ std::vector<std::uint8_t> serialize_sparse(const ActivePixels& a) {
       put(out, at, std::uint32_t(y));
       put(out, at, a.row_count(y));
     }
-  for (const auto& p : a.pixels) {
-    put(out, at, p.x);
-    std::memcpy(out.data() + at, p.rgb, 3);
-    at += 3;
-    put(out, at, p.z);
-    put(out, at, p.id);
-  }
+  for (const auto& p : a.pixels)
+    put_pixel(out, at, p);
   return out;
 }
 
@@ -221,13 +228,8 @@ ActivePixels deserialize_sparse(const std::uint8_t* p, std::size_t size, int wid
   for (int y = y0; y < y1; ++y)
     a.row_begin[y - y0 + 1] = a.row_begin[y - y0] + count[y - y0];
   a.pixels.resize(a.row_begin.back());
-  for (auto& px : a.pixels) {
-    px.x = get<std::uint16_t>(p, end);
-    for (int k = 0; k < 3; ++k)
-      px.rgb[k] = get<std::uint8_t>(p, end);
-    px.z = get<float>(p, end);
-    px.id = get<std::uint32_t>(p, end);
-  }
+  for (auto& px : a.pixels)
+    px = get_pixel(p, end);
   return a;
 }
 
@@ -242,13 +244,8 @@ ActivePixels deserialize_active(const std::uint8_t* p, std::size_t size) {
   for (int y = a.y0; y < a.y1; ++y)
     a.row_begin[y - a.y0 + 1] = a.row_begin[y - a.y0] + get<std::uint32_t>(p, end);
   a.pixels.resize(a.row_begin.back());
-  for (auto& px : a.pixels) {
-    px.x = get<std::uint16_t>(p, end);
-    for (int k = 0; k < 3; ++k)
-      px.rgb[k] = get<std::uint8_t>(p, end);
-    px.z = get<float>(p, end);
-    px.id = get<std::uint32_t>(p, end);
-  }
+  for (auto& px : a.pixels)
+    px = get_pixel(p, end);
   return a;
 }
 
