@@ -50,33 +50,57 @@ Bytes encode_object(const Scene& s, std::size_t o) {
   return b;
 }
 
-std::vector<Poly> object_polygons(NodeContext& ctx, const Bytes& msg) {
+Mesh mesh_of(const std::vector<Poly>& polys) {
+  Mesh m;
+  m.vertices.reserve(3 * polys.size());
+  m.tris.reserve(polys.size());
+  for (const Poly& p : polys) {
+    const auto at = std::uint32_t(m.vertices.size());
+    m.tris.push_back({p.id, p.material, {at, at + 1, at + 2}});
+    m.vertices.insert(m.vertices.end(), p.v, p.v + 3);
+  }
+  return m;
+}
+
+std::vector<Poly> polys_of(const Mesh& m, const std::vector<std::uint32_t>& subset) {
+  std::vector<Poly> out;
+  out.reserve(subset.size());
+  for (std::uint32_t t : subset) {
+    const Mesh::Tri& tr = m.tris[t];
+    out.push_back(
+        {tr.id, tr.material, {m.vertices[tr.v[0]], m.vertices[tr.v[1]], m.vertices[tr.v[2]]}});
+  }
+  return out;
+}
+
+Mesh object_mesh(NodeContext& ctx, const Bytes& msg) {
   if (msg.size() < sizeof(ObjectHeader)) throw std::runtime_error("object message too short");
   ObjectHeader h;
   std::memcpy(&h, msg.data(), sizeof h);
   const std::uint8_t* rest = msg.data() + sizeof h;
   const std::size_t n = msg.size() - sizeof h;
-  if (h.is_mesh) return unpack<Poly>(rest, n);
+  if (h.is_mesh) return mesh_of(unpack<Poly>(rest, n));
   ObjectDesc d;
   d.first_vertex = h.first_vertex;
   d.vertex_count = h.vertex_count;
   d.first_triangle = h.first_triangle;
   d.triangle_count = h.triangle_count;
   d.text.assign(reinterpret_cast<const char*>(rest), n);
-  const Tessellation t = tessellate(d);
-  std::vector<Poly> out;
-  out.reserve(t.triangles.size());
+  Tessellation t = tessellate(d);
+  Mesh m;
+  m.vertices = std::move(t.vertices);
+  m.tris.reserve(t.triangles.size());
   for (std::size_t i = 0; i < t.triangles.size(); ++i) {
     const Triangle& tr = t.triangles[i];
-    Poly p{d.first_triangle + std::uint32_t(i), tr.material, {}};
-    for (int k = 0; k < 3; ++k)
-      p.v[k] = t.vertices[tr.v[k] - d.first_vertex];
-    out.push_back(p);
+    m.tris.push_back(
+        {d.first_triangle + std::uint32_t(i),
+         tr.material,
+         {tr.v[0] - d.first_vertex, tr.v[1] - d.first_vertex, tr.v[2] - d.first_vertex}});
   }
   Counters c;
-  c.triangles_tessellated = out.size();
+  c.triangles_tessellated = m.tris.size();
   ctx.charge(c);
-  return out;
+  return m;
 }
 
 bool object_may_touch(const NodeRenderer& nr, const Bytes& msg, const RowSet& rows,
@@ -105,32 +129,65 @@ bool object_may_touch(const NodeRenderer& nr, const Bytes& msg, const RowSet& ro
   return first <= y1 && first < rows.end;
 }
 
-bool polygon_rows(const NodeRenderer& nr, const Poly& p, int& y0, int& y1) {
-  ProjectedVertex pv[3];
-  for (int k = 0; k < 3; ++k)
-    pv[k] = nr.view().project(p.v[k]);
-  const ProjectedVertex* pp[3] = {&pv[0], &pv[1], &pv[2]};
-  return row_extent(pp, nr.width(), nr.height(), y0, y1);
+std::uint32_t object_vertex_count(const Bytes& msg) {
+  if (msg.size() < sizeof(ObjectHeader)) return 0;
+  ObjectHeader h;
+  std::memcpy(&h, msg.data(), sizeof h);
+  return h.is_mesh ? 3 * h.triangle_count : h.vertex_count;
 }
 
-void render_polygons(NodeContext& ctx, const NodeRenderer& nr, const std::vector<Poly>& polys,
-                     Framebuffer& fb) {
+ProjectedMesh::ProjectedMesh(NodeContext& ctx, const NodeRenderer& nr, const Mesh& m) : mesh(m) {
   Counters c;
-  TriangleBatch batch;
-  for (const Poly& p : polys) {
-    ProjectedVertex pv[3];
-    for (int k = 0; k < 3; ++k)
-      pv[k] = nr.project(p.v[k], c);
-    const ProjectedVertex* pp[3] = {&pv[0], &pv[1], &pv[2]};
-    batch.clear();
-    nr.setup(p.id, Triangle{{0, 1, 2}, p.material}, pp, nullptr, batch, c);
-    draw_batch(batch, nr.shade(), fb, c);
-  }
+  pv.reserve(m.vertices.size());
+  for (const Vertex& v : m.vertices)
+    pv.push_back(nr.project(v, c));
   ctx.charge(c);
 }
 
-void render_host_messages_then_merge(
-    NodeContext& ctx, const std::function<std::vector<Poly>(const Bytes&)>& polygons_of) {
+bool ProjectedMesh::rows(const NodeRenderer& nr, std::uint32_t t, int& y0, int& y1) const {
+  const Mesh::Tri& tr = mesh.tris[t];
+  const ProjectedVertex* pp[3] = {&pv[tr.v[0]], &pv[tr.v[1]], &pv[tr.v[2]]};
+  return row_extent(pp, nr.width(), nr.height(), y0, y1);
+}
+
+std::vector<std::uint32_t> triangles_touching(NodeContext& ctx, const NodeRenderer& nr,
+                                              const ProjectedMesh& pm, const RowSet& rows) {
+  std::vector<std::uint32_t> out;
+  const auto n = std::uint32_t(pm.mesh.tris.size());
+  for (std::uint32_t t = 0; t < n; ++t) {
+    int y0, y1;
+    if (!pm.rows(nr, t, y0, y1)) continue;
+    const int first = rows.first_from(y0);
+    if (first <= y1 && first < rows.end) out.push_back(t);
+  }
+  Counters k;
+  k.triangles_estimated = n;
+  ctx.charge(k);
+  return out;
+}
+
+void render_mesh(NodeContext& ctx, const NodeRenderer& nr, const ProjectedMesh& pm, Framebuffer& fb,
+                 const std::vector<std::uint32_t>* subset) {
+  Counters c;
+  TriangleBatch batch;
+  auto draw = [&](std::uint32_t t) {
+    const Mesh::Tri& tr = pm.mesh.tris[t];
+    const ProjectedVertex* pp[3] = {&pm.pv[tr.v[0]], &pm.pv[tr.v[1]], &pm.pv[tr.v[2]]};
+    batch.clear();
+    nr.setup(tr.id, Triangle{{0, 1, 2}, tr.material}, pp, nullptr, batch, c);
+    draw_batch(batch, nr.shade(), fb, c);
+  };
+  if (subset)
+    for (std::uint32_t t : *subset)
+      draw(t);
+  else
+    for (std::uint32_t t = 0; t < pm.mesh.tris.size(); ++t)
+      draw(t);
+  ctx.charge(c);
+}
+
+void render_host_messages_then_merge(NodeContext& ctx, bool tessellates,
+                                     const std::function<Mesh(const Bytes&)>& mesh_of_message) {
   check_scene(ctx.scene());
   const NodeRenderer nr(ctx.scene());
   Framebuffer fb = nr.make_framebuffer(RowSet::all(nr.height()));
@@ -143,9 +200,14 @@ void render_host_messages_then_merge(
     for (;;) {
       Bytes b = ctx.comm().recv(ctx.comm().host_rank(), kTagHost);
       if (is_end(b)) break;
-      ctx.alloc(double(b.size()), "host message");
-      render_polygons(ctx, nr, polygons_of(b), fb);
-      ctx.release(double(b.size()));
+      const Held msg(ctx, double(b.size()), "host message");
+      const Mesh m = mesh_of_message(b);
+      // Host initiated renders out of the packet itself; node initiated holds the tessellation
+      // (the projected vertices are counted with it).
+      const Held held(
+          ctx, tessellates ? m.bytes() + double(m.vertices.size() * sizeof(ProjectedVertex)) : 0.0,
+          "polygons");
+      render_mesh(ctx, nr, ProjectedMesh(ctx, nr, m), fb);
     }
   }
   hierarchical_merge(ctx, std::move(fb));

@@ -12,7 +12,10 @@
 
 namespace zc::blazek {
 
-// A polygon as the host sends it: its global id, material and world vertices (80 bytes).
+// A polygon as it travels (host initiated packets, forwarded polygons): its global scene id (the
+// depth tie-break), material and three WORLD-space vertices with normals, 80 bytes; the receiving
+// node projects and shades them. (The thesis's packets were smaller: "packets containing 100
+// polygons each ... three kilobytes", about 30 bytes a polygon, ch. V.)
 struct Poly {
   std::uint32_t id, material;
   Vertex v[3];
@@ -23,17 +26,47 @@ constexpr int kTagHost = 1, kTagForward = 2, kTagMerge = 3;
 // Checks the scene suits the methods (untextured; Blazek's renderer had no textures).
 void check_scene(const Scene& s);
 
+// Modelled node memory held for a scope (messages, tessellated polygons): alloc now, release at
+// the end of the scope.
+class Held {
+public:
+  Held(NodeContext& ctx, double bytes, const char* what) : ctx_(ctx), bytes_(bytes) {
+    ctx_.alloc(bytes_, what);
+  }
+  ~Held() { ctx_.release(bytes_); }
+  Held(const Held&) = delete;
+  Held& operator=(const Held&) = delete;
+
+private:
+  NodeContext& ctx_;
+  double bytes_;
+};
+
+// A node's polygons, as a shared-vertex mesh: an object's tessellation keeps its shared vertices,
+// so each is transformed once (as the sequential renderer does); polygons that travelled as Poly
+// records (host initiated packets, forwarded polygons) bring three vertices each, which the node
+// transforms one by one: the price of shipping polygons rather than descriptions.
+struct Mesh {
+  struct Tri {
+    std::uint32_t id, material, v[3]; // global id; indices into vertices
+  };
+  std::vector<Vertex> vertices;
+  std::vector<Tri> tris;
+  double bytes() const {
+    return double(vertices.size() * sizeof(Vertex) + tris.size() * sizeof(Tri));
+  }
+};
+Mesh mesh_of(const std::vector<Poly>& polys);
+// The polygons of a subset (indices into m.tris) of a mesh, to be sent.
+std::vector<Poly> polys_of(const Mesh& m, const std::vector<std::uint32_t>& subset);
+
 // Object description message: ranges + the one-line text (~100 bytes). Mesh objects, which no
 // node can re-tessellate, travel as their polygons (kind "mesh" + a polygon payload).
 Bytes encode_object(const Scene& s, std::size_t object);
-// Decodes and tessellates (charging triangles_tessellated) into polygons.
-std::vector<Poly> object_polygons(NodeContext& ctx, const Bytes& msg);
+// Decodes and tessellates (charging triangles_tessellated).
+Mesh object_mesh(NodeContext& ctx, const Bytes& msg);
 // The polygons of an object as the host tessellates them (charged to the caller).
 std::vector<Poly> host_polygons(const Scene& s, std::size_t object, Counters& c);
-
-// Projects, sets up and scan-converts polygons into fb (on fb's rows); charges the work.
-void render_polygons(NodeContext& ctx, const NodeRenderer& nr, const std::vector<Poly>& polys,
-                     Framebuffer& fb);
 
 // Whether an object (its message) can touch any row of `rows`, judged from its description's
 // bounding box alone (primitives fit [-1, 1]^3 before their transform). `triangles` receives its
@@ -41,14 +74,33 @@ void render_polygons(NodeContext& ctx, const NodeRenderer& nr, const std::vector
 bool object_may_touch(const NodeRenderer& nr, const Bytes& msg, const RowSet& rows,
                       std::uint32_t& triangles);
 
-// Rows [y0, y1] a polygon can touch (false: none).
-bool polygon_rows(const NodeRenderer& nr, const Poly& p, int& y0, int& y1);
+// The vertex count of an object message's tessellation (without tessellating it).
+std::uint32_t object_vertex_count(const Bytes& msg);
+
+// A mesh with its vertices projected (vertices_transformed charged once per vertex).
+struct ProjectedMesh {
+  const Mesh& mesh;
+  std::vector<ProjectedVertex> pv;
+  ProjectedMesh(NodeContext& ctx, const NodeRenderer& nr, const Mesh& m);
+  // Rows [y0, y1] triangle t can touch (false: none: culled or off screen).
+  bool rows(const NodeRenderer& nr, std::uint32_t t, int& y0, int& y1) const;
+};
+
+// The triangles of a projected mesh that can touch `rows` (charges triangles_estimated: the test
+// the strip methods make for every polygon).
+std::vector<std::uint32_t> triangles_touching(NodeContext& ctx, const NodeRenderer& nr,
+                                              const ProjectedMesh& pm, const RowSet& rows);
+
+// Sets up and scan-converts triangles of a projected mesh (all, or `subset`) into fb (on fb's
+// rows); charges the work.
+void render_mesh(NodeContext& ctx, const NodeRenderer& nr, const ProjectedMesh& pm, Framebuffer& fb,
+                 const std::vector<std::uint32_t>* subset = nullptr);
 
 // The node side of host initiated and node initiated: a full frame buffer, every host message
 // until the end marker turned into polygons by `polygons_of` and rendered, then the hierarchical
-// merge.
-void render_host_messages_then_merge(
-    NodeContext& ctx, const std::function<std::vector<Poly>(const Bytes&)>& polygons_of);
+// merge. `tessellates`: the mesh is a tessellation held besides the message (node memory).
+void render_host_messages_then_merge(NodeContext& ctx, bool tessellates,
+                                     const std::function<Mesh(const Bytes&)>& mesh_of_message);
 
 // Algorithm 4 / Figure 10: log2 P steps; at step i the active nodes with bit i set send their
 // frame buffer to the neighbour over channel i, which keeps the nearer pixel. Node 0 ends with

@@ -61,26 +61,23 @@ void host_broadcast_node(NodeContext& ctx) {
       std::memcpy(&sz, all.data() + at, 4);
       Bytes b(all.begin() + at + 4, all.begin() + at + 4 + sz);
       at += 4 + sz;
-      std::vector<Poly> keep;
-      Counters k;
       std::uint32_t count = 0;
       if (!object_may_touch(nr, b, rows, count)) {
-        // The node tessellates and tests the object all the same (the method does): charge the
-        // same counts without computing polygons that cannot land in its rows.
+        // The node tessellates, transforms and tests the object all the same (the method does):
+        // charge the same counts without computing polygons that cannot land in its rows.
+        Counters k;
         k.triangles_tessellated = count;
         k.triangles_estimated = count;
+        k.vertices_transformed = object_vertex_count(b);
         ctx.charge(k);
         continue;
       }
-      for (const Poly& p : object_polygons(ctx, b)) {
-        int y0, y1;
-        k.triangles_estimated += 1;
-        if (!polygon_rows(nr, p, y0, y1)) continue;
-        const int first = rows.first_from(y0);
-        if (first <= y1 && first < rows.end) keep.push_back(p);
-      }
-      ctx.charge(k);
-      render_polygons(ctx, nr, keep, fb);
+      const Mesh m = object_mesh(ctx, b);
+      const ProjectedMesh pm(ctx, nr, m);
+      const Held held(ctx, m.bytes() + double(pm.pv.size() * sizeof(ProjectedVertex)), "polygons");
+      // "Polygons lying wholly outside of the node's portion of the frame buffer are discarded".
+      const auto keep = triangles_touching(ctx, nr, pm, rows);
+      render_mesh(ctx, nr, pm, fb, &keep);
     }
   }
   paste_at_node0(ctx, nr, fb);

@@ -17,7 +17,8 @@ int packet_size(const NodeContext& ctx) {
     n = std::stoi(v);
   } catch (...) {
   }
-  if (n < 1 || n > 100000) throw UsageError("--packet '" + v + "': expected 1..100000 polygons");
+  // Ch. V: "Polygon packet sizes ranging from 10 through 10^3 polygons per packet are compared".
+  if (n < 10 || n > 1000) throw UsageError("--packet '" + v + "': expected 10..1000 polygons");
   return n;
 }
 
@@ -34,12 +35,14 @@ void host_initiated_host(NodeContext& ctx) {
     Counters k;
     k.bytes_packed = packet.size() * sizeof(Poly);
     ctx.charge(k);
-    c.send(next, kTagHost, pack(packet)); // the host waits for each packet to leave (one link)
+    // Blocking: the host waits for each packet to reach its node (the SRM has one link, to node
+    // 0); nodes buffer what they have not consumed yet, as the iPSC/2's message system did.
+    c.send(next, kTagHost, pack(packet));
     next = (next + 1) % P;
     packet.clear();
   };
   for (std::size_t o = 0; o < s.objects.size(); ++o) {
-    Counters k;
+    Counters k; // the host's tessellation, on the host's CPU (node 0's cost table)
     for (const Poly& p : host_polygons(s, o, k)) {
       packet.push_back(p);
       if (int(packet.size()) == N) flush();
@@ -52,7 +55,8 @@ void host_initiated_host(NodeContext& ctx) {
 }
 
 void host_initiated_node(NodeContext& ctx) {
-  render_host_messages_then_merge(ctx, [&](const Bytes& b) { return unpack<Poly>(b); });
+  render_host_messages_then_merge(ctx, false,
+                                  [&](const Bytes& b) { return mesh_of(unpack<Poly>(b)); });
 }
 
 } // namespace zc::blazek

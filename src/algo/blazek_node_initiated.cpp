@@ -24,7 +24,7 @@ void describe_round_robin(NodeContext& ctx) {
 }
 
 void node_initiated_node(NodeContext& ctx) {
-  render_host_messages_then_merge(ctx, [&](const Bytes& b) { return object_polygons(ctx, b); });
+  render_host_messages_then_merge(ctx, true, [&](const Bytes& b) { return object_mesh(ctx, b); });
 }
 
 } // namespace zc::blazek

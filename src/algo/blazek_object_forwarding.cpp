@@ -3,8 +3,6 @@
 // its strip and forwards to the owners of the other strips what falls there: the description to
 // be re-tessellated (--forward object) or the tessellated polygons (--forward polygons). Strips
 // are pasted, not merged.
-#include <set>
-
 #include "algo/blazek_common.hpp"
 #include "algo/blazek_methods.hpp"
 #include "comm/collectives.hpp"
@@ -33,30 +31,30 @@ void object_forwarding_node(NodeContext& ctx) {
     for (;;) {
       Bytes b = c.recv(c.host_rank(), kTagHost);
       if (is_end(b)) break;
-      const auto polys = object_polygons(ctx, b);
-      std::vector<Poly> own;
-      std::vector<std::vector<Poly>> others(P);
-      std::set<int> touched;
-      Counters k;
-      for (const Poly& p : polys) {
+      const Held msg(ctx, double(b.size()), "host message");
+      const Mesh m = object_mesh(ctx, b);
+      const ProjectedMesh pm(ctx, nr, m);
+      const Held held(ctx, m.bytes() + double(pm.pv.size() * sizeof(ProjectedVertex)), "polygons");
+      // Which strips each polygon (or a portion of it) lies in.
+      std::vector<std::uint32_t> own;
+      std::vector<std::vector<std::uint32_t>> others(P);
+      const auto n = std::uint32_t(m.tris.size());
+      for (std::uint32_t t = 0; t < n; ++t) {
         int y0, y1;
-        k.triangles_estimated += 1;
-        if (!polygon_rows(nr, p, y0, y1)) continue;
-        for (int s = strip_of(y0); s <= strip_of(y1); ++s) {
-          if (s == r)
-            own.push_back(p);
-          else {
-            others[s].push_back(p);
-            touched.insert(s);
-          }
-        }
+        if (!pm.rows(nr, t, y0, y1)) continue;
+        for (int s = strip_of(y0); s <= strip_of(y1); ++s)
+          (s == r ? own : others[s]).push_back(t);
       }
+      Counters k;
+      k.triangles_estimated = n;
       ctx.charge(k);
-      for (int s : touched) {
-        ++forwarded;
-        sends.push_back(c.isend(s, kTagForward, mode == "object" ? b : pack(others[s])));
-      }
-      render_polygons(ctx, nr, own, fb);
+      for (int s = 0; s < P; ++s)
+        if (!others[s].empty()) {
+          ++forwarded;
+          sends.push_back(
+              c.isend(s, kTagForward, mode == "object" ? b : pack(polys_of(m, others[s]))));
+        }
+      render_mesh(ctx, nr, pm, fb, &own);
     }
     for (int n = 0; n < P; ++n)
       if (n != r) sends.push_back(c.isend(n, kTagForward, Bytes{}));
@@ -67,17 +65,19 @@ void object_forwarding_node(NodeContext& ctx) {
         ++ends;
         continue;
       }
-      std::vector<Poly> polys = mode == "object" ? object_polygons(ctx, b) : unpack<Poly>(b);
+      const Held msg(ctx, double(b.size()), "forwarded message");
       if (mode == "object") {
-        std::vector<Poly> own;
-        for (const Poly& p : polys) {
-          int y0, y1;
-          if (polygon_rows(nr, p, y0, y1) && strip_of(y0) <= r && r <= strip_of(y1))
-            own.push_back(p);
-        }
-        polys.swap(own);
+        // Re-tessellated; only the polygons in this strip are rendered.
+        const Mesh m = object_mesh(ctx, b);
+        const ProjectedMesh pm(ctx, nr, m);
+        const Held held(ctx, m.bytes() + double(pm.pv.size() * sizeof(ProjectedVertex)),
+                        "polygons");
+        const auto mine_only = triangles_touching(ctx, nr, pm, mine);
+        render_mesh(ctx, nr, pm, fb, &mine_only);
+      } else {
+        const Mesh m = mesh_of(unpack<Poly>(b));
+        render_mesh(ctx, nr, ProjectedMesh(ctx, nr, m), fb);
       }
-      render_polygons(ctx, nr, polys, fb);
     }
     for (auto& h : sends)
       h->wait();
