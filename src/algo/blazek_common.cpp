@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <deque>
 
 #include "comm/collectives.hpp"
 #include "comm/wire.hpp"
@@ -186,7 +187,7 @@ void render_mesh(NodeContext& ctx, const NodeRenderer& nr, const ProjectedMesh& 
   ctx.charge(c);
 }
 
-void render_host_messages_then_merge(NodeContext& ctx, bool tessellates,
+void render_host_messages_then_merge(NodeContext& ctx, bool tessellates, bool acknowledge,
                                      const std::function<Mesh(const Bytes&)>& mesh_of_message) {
   check_scene(ctx.scene());
   const NodeRenderer nr(ctx.scene());
@@ -197,6 +198,7 @@ void render_host_messages_then_merge(NodeContext& ctx, bool tessellates,
     Counters k;
     k.pixels_cleared = fb.pixel_count();
     ctx.charge(k);
+    std::deque<SendHandle> acks;
     for (;;) {
       Bytes b = ctx.comm().recv(ctx.comm().host_rank(), kTagHost);
       if (is_end(b)) break;
@@ -208,7 +210,16 @@ void render_host_messages_then_merge(NodeContext& ctx, bool tessellates,
           ctx, tessellates ? m.bytes() + double(m.vertices.size() * sizeof(ProjectedVertex)) : 0.0,
           "polygons");
       render_mesh(ctx, nr, ProjectedMesh(ctx, nr, m), fb);
+      if (acknowledge) {
+        acks.push_back(ctx.comm().isend(ctx.comm().host_rank(), kTagAck, Bytes(4)));
+        if (acks.size() > std::size_t(kHostWindow)) {
+          acks.front()->wait();
+          acks.pop_front();
+        }
+      }
     }
+    for (auto& a : acks)
+      a->wait();
   }
   hierarchical_merge(ctx, std::move(fb));
 }

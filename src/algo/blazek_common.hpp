@@ -21,7 +21,13 @@ struct Poly {
   Vertex v[3];
 };
 
-constexpr int kTagHost = 1, kTagForward = 2, kTagMerge = 3;
+constexpr int kTagHost = 1, kTagForward = 2, kTagMerge = 3, kTagAck = 4;
+
+// Host initiated flow control: a node buffers at most this many unconsumed polygon packets (its
+// message buffers are part of its few megabytes); it acknowledges each packet it has rendered,
+// and the host waits for the acknowledgement of packet i - kHostWindow before sending packet i to
+// the same node. (An assumption: the thesis does not say how its host was throttled.)
+constexpr int kHostWindow = 4;
 
 // Checks the scene suits the methods (untextured; Blazek's renderer had no textures).
 void check_scene(const Scene& s);
@@ -98,8 +104,9 @@ void render_mesh(NodeContext& ctx, const NodeRenderer& nr, const ProjectedMesh& 
 
 // The node side of host initiated and node initiated: a full frame buffer, every host message
 // until the end marker turned into polygons by `polygons_of` and rendered, then the hierarchical
-// merge. `tessellates`: the mesh is a tessellation held besides the message (node memory).
-void render_host_messages_then_merge(NodeContext& ctx, bool tessellates,
+// merge. `tessellates`: the mesh is a tessellation held besides the message (node memory);
+// `acknowledge`: send the host an acknowledgement per message (kHostWindow).
+void render_host_messages_then_merge(NodeContext& ctx, bool tessellates, bool acknowledge,
                                      const std::function<Mesh(const Bytes&)>& mesh_of_message);
 
 // Algorithm 4 / Figure 10: log2 P steps; at step i the active nodes with bit i set send their

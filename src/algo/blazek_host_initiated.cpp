@@ -1,6 +1,7 @@
 // Blazek 1991, ch. V "Host Initiated Method": the host tessellates the primitives and sends
 // polygon packets of N polygons round-robin to the nodes; each node renders into its own full
 // frame buffer; the buffers are merged hierarchically (Algorithm 4, Figure 10).
+#include <algorithm>
 #include <string>
 
 #include "algo/blazek_common.hpp"
@@ -29,14 +30,17 @@ void host_initiated_host(NodeContext& ctx) {
   const int P = c.size(), N = packet_size(ctx);
   auto ph = ctx.phase("distribute");
   std::vector<Poly> packet;
+  std::vector<int> sent(std::size_t(P), 0);
   int next = 0;
   auto flush = [&] {
     if (packet.empty()) return;
+    // Flow control: wait until the node has rendered packet i - kHostWindow.
+    if (sent[std::size_t(next)]++ >= kHostWindow) c.recv(next, kTagAck);
     Counters k;
     k.bytes_packed = packet.size() * sizeof(Poly);
     ctx.charge(k);
     // Blocking: the host waits for each packet to reach its node (the SRM has one link, to node
-    // 0); nodes buffer what they have not consumed yet, as the iPSC/2's message system did.
+    // 0); a node buffers up to kHostWindow packets it has not rendered yet.
     c.send(next, kTagHost, pack(packet));
     next = (next + 1) % P;
     packet.clear();
@@ -52,10 +56,13 @@ void host_initiated_host(NodeContext& ctx) {
   flush();
   for (int n = 0; n < P; ++n)
     c.send(n, kTagHost, Bytes{});
+  for (int n = 0; n < P; ++n) // the acknowledgements still due
+    for (int i = 0; i < std::min(sent[std::size_t(n)], kHostWindow); ++i)
+      c.recv(n, kTagAck);
 }
 
 void host_initiated_node(NodeContext& ctx) {
-  render_host_messages_then_merge(ctx, false,
+  render_host_messages_then_merge(ctx, false, true,
                                   [&](const Bytes& b) { return mesh_of(unpack<Poly>(b)); });
 }
 

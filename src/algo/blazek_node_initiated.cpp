@@ -24,7 +24,8 @@ void describe_round_robin(NodeContext& ctx) {
 }
 
 void node_initiated_node(NodeContext& ctx) {
-  render_host_messages_then_merge(ctx, true, [&](const Bytes& b) { return object_mesh(ctx, b); });
+  render_host_messages_then_merge(ctx, true, false,
+                                  [&](const Bytes& b) { return object_mesh(ctx, b); });
 }
 
 } // namespace zc::blazek

@@ -86,3 +86,14 @@ TEST(Blazek, A1024FrameBufferDoesNotFitAFourMegabyteNodeButStripsDo) {
   c.algorithm = "object-forwarding";
   EXPECT_EQ(run_simulation_isolated(c)["status"], "ok");
 }
+
+TEST(Blazek, NodesTransformATessellationsVerticesOnceShippedPolygonsThreeTimes) {
+  const char* scene = "scenes/blazek/spheres_16.json";
+  const auto seq = blazek("sequential", scene, 1, 64, {}, false);
+  const auto vt = [](const nlohmann::json& r) {
+    return r["counters"]["vertices_transformed"].get<std::uint64_t>();
+  };
+  EXPECT_EQ(vt(blazek("node-initiated", scene, 4, 64)), vt(seq));
+  EXPECT_EQ(vt(blazek("host-initiated", scene, 4, 64)),
+            3 * seq["scene"]["triangles"].get<std::uint64_t>());
+}
