@@ -8,8 +8,10 @@ namespace zc::cli {
 void SimFlags::add_to(CLI::App& app) {
   app.add_option("--machine", machine, "ipsc2, ipsc860, volvox, or a platform .xml")
       ->capture_default_str();
-  app.add_option("--nodes", nodes, "simulated nodes (a power of two on a cube)")
-      ->capture_default_str();
+  nodes_option =
+      app.add_option("--nodes", nodes,
+                     "simulated nodes (a power of two on a cube; a platform .xml states its own)")
+          ->capture_default_str();
   app.add_option("--topology", topology, "cube or ring")->capture_default_str();
   app.add_option("--fidelity", fidelity, "analytic, flow or circuit")->capture_default_str();
   app.add_option("--latency", latency, "what-if: message start-up (e.g. 275us)");
@@ -33,7 +35,10 @@ void SimFlags::apply(SimConfig& cfg) const {
   cfg.nodes = nodes;
   cfg.topology = parse_topology(topology);
   cfg.fidelity = parse_fidelity(fidelity);
-  if (!machine.ends_with(".xml")) check_node_count(cfg.topology, nodes);
+  if (!machine.ends_with(".xml"))
+    check_node_count(cfg.topology, nodes);
+  else if (nodes_option && nodes_option->count() == 0)
+    cfg.nodes = 0; // take the file's node count (zcube.nodes)
   if (!latency.empty()) cfg.overrides.latency_s = parse_time(latency, "--latency");
   if (!bandwidth.empty()) cfg.overrides.bandwidth_Bps = parse_bandwidth(bandwidth, "--bandwidth");
   if (!per_hop.empty()) cfg.overrides.per_hop_s = parse_time(per_hop, "--per-hop");

@@ -13,6 +13,7 @@ struct SimFlags {
   std::string machine = "ipsc2", topology = "cube", fidelity = "circuit";
   int nodes = 1;
   std::string latency, bandwidth, per_hop, cpu_scale, memory, cost_scale;
+  CLI::Option* nodes_option = nullptr; // a platform .xml gives the node count unless --nodes does
 
   void add_to(CLI::App& app);
   // Fills cfg's machine, nodes, topology, fidelity and overrides (UsageError on bad values).

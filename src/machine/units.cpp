@@ -54,6 +54,14 @@ double parse_bytes(const std::string& text, const std::string& flag) {
   return parse_with(text, flag, u, "size");
 }
 
+double parse_speed(const std::string& text, const std::string& flag) {
+  // SimGrid host speeds: "f" is one flop per second (platform DTD: 1Gf, 10Mf, 3.5kf).
+  static const std::map<std::string, double> u = {
+      {"", 1},      {"f", 1},     {"kf", 1e3},     {"Mf", 1e6},     {"Gf", 1e9},
+      {"Tf", 1e12}, {"flops", 1}, {"kflops", 1e3}, {"Mflops", 1e6}, {"Gflops", 1e9}};
+  return parse_with(text, flag, u, "speed");
+}
+
 std::string format_double(double v) {
   char buf[64];
   auto [p, ec] = std::to_chars(buf, buf + sizeof buf, v);

@@ -296,9 +296,26 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
                              {"phases", ph}});
     if (!ctxs[r]->metrics().empty()) j["per_node"].back()["metrics"] = ctxs[r]->metrics();
   }
-  j["communication"] = {{"messages", msgs}, {"bytes", bytes}};
+  // Defaults of the DESIGN §4 keys an algorithm may refine through its metrics (Kurc et al.
+  // replace both by their own definitions: the sum over communication steps of the largest
+  // volume of a step, and the imbalance of the merge loads).
+  //  concurrent_volume_bytes: the largest volume one node sent (a lower bound of the time-critical
+  //    volume when the algorithm does not report its steps);
+  //  load_imbalance: (max - min) / mean of the nodes' busy (CPU) time, the definition the
+  //    algorithms use for their own loads; 0 when nobody worked.
+  std::uint64_t max_sent = 0;
+  double busy_max = 0, busy_min = P > 0 ? stats[0].busy_s : 0.0, busy_sum = 0;
+  for (int r = 0; r < P; ++r) {
+    max_sent = std::max(max_sent, stats[r].bytes_sent);
+    busy_max = std::max(busy_max, stats[r].busy_s);
+    busy_min = std::min(busy_min, stats[r].busy_s);
+    busy_sum += stats[r].busy_s;
+  }
+  const double busy_mean = P > 0 ? busy_sum / P : 0.0;
+  j["communication"] = {
+      {"messages", msgs}, {"bytes", bytes}, {"concurrent_volume_bytes", max_sent}};
   j["counters"] = total;
-  j["load_imbalance"] = nullptr;
+  j["load_imbalance"] = busy_mean > 0 ? (busy_max - busy_min) / busy_mean : 0.0;
   // Algorithm metrics (node 0's) merge into the top level, objects key by key.
   for (auto& [k, v] : ctxs[0]->metrics().items()) {
     if (v.is_object() && j.contains(k) && j[k].is_object())
