@@ -1,5 +1,6 @@
 #include "raster/framebuffer.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -31,6 +32,22 @@ void Framebuffer::clear(glm::vec3 background) {
     std::memcpy(&rgb_[3 * i], bg, 3);
   for (std::size_t r = 1; r < std::size_t(rows_.count()); ++r)
     std::memcpy(&rgb_[r * row], rgb_.data(), row);
+}
+
+void Framebuffer::clear_rows(int y0, int y1, glm::vec3 background) {
+  const int r0 = rows_.local(rows_.first_from(y0));
+  const int r1 = rows_.local(rows_.first_from(std::min(y1, rows_.end)));
+  if (r1 <= r0) return;
+  const std::size_t a = std::size_t(r0) * width_, b = std::size_t(r1) * width_;
+  std::fill(depth_.begin() + a, depth_.begin() + b, std::numeric_limits<float>::infinity());
+  std::fill(ids_.begin() + a, ids_.begin() + b, kNoTriangle);
+  const std::uint8_t bg[3] = {to_byte(background.x), to_byte(background.y), to_byte(background.z)};
+  if (bg[0] == bg[1] && bg[1] == bg[2]) {
+    std::memset(rgb_.data() + 3 * a, bg[0], 3 * (b - a));
+    return;
+  }
+  for (std::size_t i = a; i < b; ++i)
+    std::memcpy(&rgb_[3 * i], bg, 3);
 }
 
 std::uint64_t Framebuffer::merge(const Framebuffer& o) {

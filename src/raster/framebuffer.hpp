@@ -42,6 +42,9 @@ public:
   // Back to the background, keeping the memory (a renderer drawing many frames pays no page
   // faults for a new buffer each time).
   void clear(glm::vec3 background);
+  // The same for rows [y0, y1) of the set only (buffer already sized): threads clearing their own
+  // bands.
+  void clear_rows(int y0, int y1, glm::vec3 background);
 
   int width() const { return width_; }
   const RowSet& rows() const { return rows_; }

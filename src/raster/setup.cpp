@@ -17,6 +17,32 @@ inline std::int64_t ceil_div(std::int64_t a, std::int64_t b) {
   return -floor_div(-a, b);
 } // b > 0
 
+// floor(n / d) for d > 0, clamped to [lo, hi] (bounds of a few thousand), exactly as the integer
+// division would give it but without a 64-bit divide: the double quotient is within 1 of the true
+// one (|n| < 2^53 here, and beyond the bounds only its side matters), and integer products settle
+// the last unit.
+inline std::int64_t floor_div_clamped(std::int64_t n, std::int64_t d, std::int64_t lo,
+                                      std::int64_t hi) {
+  const double q = double(n) / double(d);
+  if (!(q > double(lo - 2))) return lo;
+  if (!(q < double(hi + 2))) return hi;
+  std::int64_t f = std::int64_t(q);
+  while (f * d > n)
+    --f;
+  while ((f + 1) * d <= n)
+    ++f;
+  return std::clamp(f, lo, hi);
+}
+
+// std::llround (half away from zero) without the library call, for |x| < 2^52 (x - trunc(x) is
+// exact there); anything larger goes to std::llround.
+inline std::int64_t round_half_away(double x) {
+  if (!(std::fabs(x) < 4503599627370496.0)) return std::llround(x);
+  const std::int64_t t = std::int64_t(x);
+  const double r = x - double(t);
+  return t + (r >= 0.5) - (r <= -0.5);
+}
+
 struct SnapVertex {
   std::int64_t X, Y; // fixed point
   double z;          // window depth
@@ -97,8 +123,8 @@ SnapVertex snap(const ClipVertex& cv, int width, int height) {
   const double sx = (cv.a[0] * invw * 0.5 + 0.5) * width;
   const double sy = (0.5 - cv.a[1] * invw * 0.5) * height;
   SnapVertex s;
-  s.X = std::llround(sx * kSub);
-  s.Y = std::llround(sy * kSub);
+  s.X = round_half_away(sx * kSub);
+  s.Y = round_half_away(sy * kSub);
   s.z = cv.a[2] * invw * 0.5 + 0.5;
   s.invw = invw;
   for (int i = 0; i < 5; ++i)
@@ -113,10 +139,11 @@ bool ScreenTriangle::span(int y, int width, int& x0, int& x1) const {
   std::int64_t lo = 0, hi = width - 1;
   for (int e = 0; e < 3; ++e) {
     const std::int64_t K = A[e] * (kSub / 2) + B[e] * py + C[e] - bias[e];
+    // ceil(-K / D) = -floor(K / D); clamping to one past the screen keeps the outcome.
     if (A[e] > 0) {
-      lo = std::max(lo, ceil_div(-K, A[e] * kSub));
+      lo = std::max(lo, -floor_div_clamped(K, A[e] * kSub, -std::int64_t(width), 0));
     } else if (A[e] < 0) {
-      hi = std::min(hi, floor_div(K, -A[e] * kSub));
+      hi = std::min(hi, floor_div_clamped(K, -A[e] * kSub, -1, std::int64_t(width) - 1));
     } else if (K < 0) {
       return false;
     }

@@ -20,8 +20,11 @@ void for_each_span(const ScreenTriangle& t, const RowSet& rows, int width, F&& f
 }
 
 // Scan-converts one screen triangle into `fb`, on the rows of `rows` (a subset of fb.rows()).
+// When `newly_covered` is given, it is increased by the pixels this triangle writes first (pixels
+// that held no triangle before): summed over a frame, the covered pixels without a final scan.
 void draw_triangle(const ScreenTriangle& t, const TriangleBatch& batch, const ShadeContext& ctx,
-                   const RowSet& rows, Framebuffer& fb, Counters& c);
+                   const RowSet& rows, Framebuffer& fb, Counters& c,
+                   std::uint64_t* newly_covered = nullptr);
 
 // Draws every triangle of a batch, in order.
 void draw_batch(const TriangleBatch& batch, const ShadeContext& ctx, Framebuffer& fb, Counters& c);
