@@ -1,7 +1,12 @@
 #pragma once
 // Running simulations from tests: every simulation in its own forked process (SimGrid allows one
 // engine per process), with a test-defined algorithm when needed.
+#include <algorithm>
+#include <cmath>
 #include <functional>
+#include <string>
+
+#include <gtest/gtest.h>
 #include <memory>
 
 #include <nlohmann/json.hpp>
@@ -9,6 +14,12 @@
 #include "sim/simulation.hpp"
 
 namespace zc::test {
+
+// |got - want| within tol of |want| (relative), with a message naming the case.
+inline void expect_rel(double got, double want, double tol, const std::string& what) {
+  EXPECT_LE(std::fabs(got - want), tol * std::max(std::fabs(want), 1e-300))
+      << what << ": got " << got << " want " << want;
+}
 
 inline SimConfig sim_config(const std::string& machine, int nodes, Topology topo, Fidelity fid) {
   SimConfig c;

@@ -15,11 +15,6 @@ using namespace zc::test;
 
 namespace {
 
-void expect_rel(double got, double want, double tol, const std::string& what) {
-  EXPECT_LE(std::fabs(got - want), tol * std::max(std::fabs(want), 1e-300))
-      << what << ": got " << got << " want " << want;
-}
-
 // One simulation per message size, so every measurement is taken while the virtual clock is
 // still small (a difference of clock readings near 1 s cannot resolve 1e-12 of 75 us).
 nlohmann::json pingpong(const std::string& m, int P, Fidelity f, Topology t = Topology::Cube,

@@ -28,11 +28,6 @@ using namespace zc::test;
 
 namespace {
 
-void expect_rel(double got, double want, double tol, const std::string& what) {
-  EXPECT_LE(std::fabs(got - want), tol * std::max(std::fabs(want), 1e-300))
-      << what << ": got " << got << " want " << want;
-}
-
 double vtime(const nlohmann::json& r) {
   EXPECT_EQ(r["status"], "ok") << r.dump();
   return r["virtual_time_s"].get<double>();
