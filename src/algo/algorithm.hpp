@@ -82,6 +82,11 @@ public:
 
   // The node holding the final picture of a frame hands it over (a full-screen frame buffer).
   virtual void deliver_image(int frame, Framebuffer image) = 0;
+  // A node writing its own rows straight to the output device hands them over; the rows every node
+  // delivered for a frame make its picture (rows nobody delivers stay background). Costs nothing:
+  // the device is outside the modelled machine, as in Charles et al. §4 ("write the image to an
+  // output device").
+  virtual void deliver_rows(int frame, Framebuffer rows) = 0;
 
   // Algorithm-specific figures for the report (merged into its top level, e.g. "load_imbalance",
   // "communication": {"concurrent_volume_bytes": ...}). Node 0's are used.

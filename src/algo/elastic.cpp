@@ -63,6 +63,10 @@ void elastic_node(NodeContext& ctx) {
   const bool request = ctx.options().get("vertices", "broadcast") == "request";
   if (ctx.options().get("vertices", "broadcast") != "broadcast" && !request)
     throw UsageError("--vertices must be broadcast or request");
+  const std::string output = ctx.options().get("output", "device");
+  if (output != "device" && output != "gather")
+    throw UsageError("--output must be device or gather");
+  const bool gather = output == "gather";
   const std::size_t V = scene.vertices.size(), T = scene.triangles.size();
   const int H = scene.height;
   const bool textured = scene.textured();
@@ -282,23 +286,33 @@ void elastic_node(NodeContext& ctx) {
       ctx.charge(w);
     }
 
-    // Output of the picture: slices gathered to node 0 (colour only).
+    // Output of the picture (§4 "write the image to an output device"). --output device: each node
+    // writes its slice to the device itself, so the communication volume does not depend on the
+    // resolution (§6); --output gather: slices gathered to node 0 (colour only), which then holds
+    // the picture.
     {
       auto ph = ctx.phase("output");
-      ctx.charge(packed(fb.rgb().size()));
-      auto parts = coll::gatherv(c, 0, fb.rgb());
+      std::vector<Bytes> parts;
+      if (gather) {
+        ctx.charge(packed(fb.rgb().size()));
+        parts = coll::gatherv(c, 0, fb.rgb());
+      }
       // Table 1 of the paper: per node triangles rendered, workload and rows.
       std::int64_t work = 0;
       for (int y = rows.begin; y < rows.end; ++y)
         work += global_load[y];
       const std::vector<std::int64_t> mine{std::int64_t(n_slice), work, rows.count()};
       auto stats = coll::gatherv(c, 0, pack(mine));
+      if (!gather) ctx.deliver_rows(f, std::move(fb));
       if (r == 0) {
-        Framebuffer full = nr.make_framebuffer(RowSet::all(H));
-        for (int k = 0; k < P; ++k)
-          std::copy(parts[k].begin(), parts[k].end(),
-                    full.rgb().begin() + std::ptrdiff_t(3) * bounds[k] * scene.width);
-        ctx.charge(packed(full.rgb().size()));
+        Framebuffer full;
+        if (gather) {
+          full = nr.make_framebuffer(RowSet::all(H));
+          for (int k = 0; k < P; ++k)
+            std::copy(parts[k].begin(), parts[k].end(),
+                      full.rgb().begin() + std::ptrdiff_t(3) * bounds[k] * scene.width);
+          ctx.charge(packed(full.rgb().size()));
+        }
         if (f == frames - 1) {
           std::int64_t total = 0;
           for (int y = 0; y < H; ++y)
@@ -326,7 +340,7 @@ void elastic_node(NodeContext& ctx) {
           const auto [mn, mx] = std::minmax_element(loads.begin(), loads.end());
           ctx.metrics()["load_imbalance"] = total ? double(*mx - *mn) / (double(total) / P) : 0.0;
         }
-        ctx.deliver_image(f, std::move(full));
+        if (gather) ctx.deliver_image(f, std::move(full));
       }
     }
     ctx.release(
@@ -342,7 +356,7 @@ Algorithm elastic_algorithm() {
   a.name = "elastic";
   a.summary = "Charles, Lefevre, Miguet 1995: elastic load-balanced image-space z-buffer";
   a.node = elastic_node;
-  a.option_keys = {"vertices"};
+  a.option_keys = {"vertices", "output"};
   return a;
 }
 

@@ -45,6 +45,15 @@ Counters packed(std::size_t bytes) {
   return c;
 }
 
+// True when the rows y in [0, h) with in(y) form more than one run: such a message has to be
+// gathered from several places of the WPA (a copy); one run is sent in place.
+template <class Pred> bool fragmented(int h, Pred in) {
+  int runs = 0;
+  for (int y = 0; y < h; ++y)
+    runs += in(y) && (y == 0 || !in(y - 1));
+  return runs > 1;
+}
+
 // Full-z-buffer message: every location of rows [y0, y1): rgb, depth, id (11 bytes each).
 Bytes pack_locations(const Framebuffer& fb, int y0, int y1) {
   const std::size_t w = std::size_t(fb.width()), a = std::size_t(y0) * w;
@@ -169,6 +178,10 @@ void node_main(NodeContext& ctx, Merge merge, Split split) {
   ActivePixels mine;              // final pixels of my scanlines (active merging)
   {
     auto ph = ctx.phase("pixel_merging");
+    // Packing is charged only for messages gathered from several runs of scanlines: the local
+    // foremost pixels are stored in consecutive memory locations precisely so that a message
+    // over one run is a contiguous region, sent and merged in place (Kurc et al. §2), as a full
+    // z-buffer's half is. zcube's own copies into Bytes are an artefact of its wire format.
     Counters w;
     if (merge == Merge::ZbufExc) {
       // Recursive halving over all pixel locations: stage i halves the current band and swaps
@@ -180,7 +193,6 @@ void node_main(NodeContext& ctx, Merge merge, Split split) {
         const bool top = !(r & (1 << i));
         const int sy0 = top ? mid : y0, sy1 = top ? y1 : mid; // half that leaves
         Bytes out = pack_locations(full, sy0, sy1);
-        w.bytes_packed += out.size();
         step_bytes.push_back(double(out.size()));
         auto h = c.isend(partner, kTagZbuf + i, std::move(out));
         Bytes in = c.recv(partner, kTagZbuf + i);
@@ -198,7 +210,6 @@ void node_main(NodeContext& ctx, Merge merge, Split split) {
             full.ids()[base + k] = ids[k];
             std::memcpy(&full.rgb()[3 * (base + k)], rgb + 3 * k, 3);
           }
-        w.bytes_packed += in.size();
         w.merge_ops += n;
         merge_load += n;
         y0 = ky0;
@@ -224,14 +235,14 @@ void node_main(NodeContext& ctx, Merge merge, Split split) {
           auto give = select_rows(mine, [&](int y) { return (owner[y] & bit) != (r & bit); });
           auto keep = select_rows(mine, [&](int y) { return (owner[y] & bit) == (r & bit); });
           Bytes out = serialize_sparse(give);
-          w.bytes_packed += out.size();
+          if (fragmented(H, [&](int y) { return (owner[y] & bit) != (r & bit); }))
+            w.bytes_packed += out.size();
           step_bytes.push_back(double(out.size()));
           auto h = c.isend(partner, kTagPair + i, std::move(out));
           Bytes in = c.recv(partner, kTagPair + i);
           h->wait();
           ActivePixels got = deserialize_sparse(in.data(), in.size(), W, 0, H);
           ctx.alloc(double(in.size()), "receive buffer");
-          w.bytes_packed += in.size();
           merge_load += got.count();
           mine = merge_active(keep, got, w);
           ctx.release(double(in.size()));
@@ -242,8 +253,9 @@ void node_main(NodeContext& ctx, Merge merge, Split split) {
         std::vector<Bytes> out(P);
         for (int k = 0; k < P; ++k) {
           out[k] = serialize_sparse(select_rows(wpa, [&](int y) { return owner[y] == k; }));
-          if (k != r) {
+          if (k != r && fragmented(H, [&](int y) { return owner[y] == k; }))
             w.bytes_packed += out[k].size();
+          if (k != r) {
             step_bytes.push_back(double(out[k].size())); // step (r XOR k) carries this one
           }
         }
@@ -257,7 +269,6 @@ void node_main(NodeContext& ctx, Merge merge, Split split) {
         for (int k = 0; k < P; ++k) {
           if (k == r) continue;
           ActivePixels got = deserialize_sparse(in[k].data(), in[k].size(), W, 0, H);
-          w.bytes_packed += in[k].size();
           merge_load += got.count();
           mine = merge_active(mine, got, w);
         }

@@ -19,7 +19,7 @@ static int cmd_run(std::vector<std::string> args) {
   sf.add_to(app);
   std::string algorithm = "sequential", scene = default_scene_path(), size, image, depth, report;
   int frames = 1;
-  std::string vertices, packet, lines, forward;
+  std::string vertices, packet, lines, forward, output;
   app.add_option("--algorithm", algorithm, "algorithm name (zcube run --list)")
       ->capture_default_str();
   app.add_option("--scene", scene, "scene file")->capture_default_str();
@@ -29,6 +29,7 @@ static int cmd_run(std::vector<std::string> args) {
   app.add_option("--depth", depth, "write its depth as EXR");
   app.add_option("--report", report, "write the report JSON");
   app.add_option("--vertices", vertices, "elastic: broadcast or request");
+  app.add_option("--output", output, "elastic: device (each node writes its slice) or gather");
   app.add_option("--packet", packet, "host-initiated: polygons per packet");
   app.add_option("--lines", lines, "host-broadcast: strips or interleaved");
   app.add_option("--forward", forward, "object-forwarding: object or polygons");
@@ -46,6 +47,7 @@ static int cmd_run(std::vector<std::string> args) {
   cfg.scene_path = scene;
   cfg.options.frames = frames;
   if (!vertices.empty()) cfg.options.values["vertices"] = vertices;
+  if (!output.empty()) cfg.options.values["output"] = output;
   if (!packet.empty()) cfg.options.values["packet"] = packet;
   if (!lines.empty()) cfg.options.values["lines"] = lines;
   if (!forward.empty()) cfg.options.values["forward"] = forward;

@@ -1,5 +1,8 @@
 #include "machine/machine.hpp"
 
+#include <iterator>
+
+#include "machine/calibrated_costs.hpp"
 #include "util/error.hpp"
 
 namespace zc {
@@ -34,12 +37,44 @@ double NetworkParams::message_time(double bytes, int hops) const {
   return startup(bytes) + bytes * per_byte_s + (hops - 1) * per_hop_s;
 }
 
-namespace {
+const std::vector<CostGroup>& cost_groups() {
+  static const std::vector<CostGroup> g = {
+      {"geometry",
+       {"vertices_transformed", "triangles_in", "triangles_culled", "triangles_clipped",
+        "triangles_setup", "triangles_estimated", "triangles_tessellated"}},
+      {"spans", {"spans", "rows_scanned"}},
+      {"pixels",
+       {"pixels_generated", "pixels_tested", "pixels_written", "pixels_final", "texels_fetched"}},
+      {"clear", {"pixels_cleared"}},
+      {"merge", {"merge_ops"}},
+      {"packing", {"bytes_packed"}}};
+  return g;
+}
 
-// Placeholder CPU costs (uncalibrated: `zcube calibrate` fits them to the papers' figures),
-// sized for compiled C on a 16 MHz 80386 + 80387 node; the i860 tables divide by a clock and
-// architecture factor.
+CostTable scale_groups(const CostTable& t, const std::vector<double>& scale) {
+  CostTable out = t;
+  const auto& groups = cost_groups();
+  for (auto& [id, v] : out.fields())
+    for (std::size_t g = 0; g < groups.size() && g < scale.size(); ++g)
+      for (const auto& f : groups[g].fields)
+        if (id == "cost_" + f) *v *= scale[g];
+  return out;
+}
+
 CostTable i386_costs() {
+  static_assert(std::size(calibrated::kI386GroupScale) == 6, "one multiplier per cost group");
+  return scale_groups(prior_i386_costs(),
+                      std::vector<double>(std::begin(calibrated::kI386GroupScale),
+                                          std::end(calibrated::kI386GroupScale)));
+}
+
+CostTable i860_costs() {
+  return i386_costs().scaled(1.0 / calibrated::kI860SpeedRatio);
+}
+
+// Placeholder CPU costs, the calibration's starting point, sized for compiled C on a 16 MHz
+// 80386 + 80387 node.
+CostTable prior_i386_costs() {
   CostTable t;
   t.vertices_transformed = 120e-6; // 4x4 matrix-vector product + Gouraud cosine, ~40 flops
   t.triangles_in = 20e-6;
@@ -61,6 +96,8 @@ CostTable i386_costs() {
   return t;
 }
 
+namespace {
+
 std::vector<MachineSpec> make_specs() {
   std::vector<MachineSpec> v;
   {
@@ -77,6 +114,7 @@ std::vector<MachineSpec> make_specs() {
     m.net.host_startup_s = 1e-3;  // SRM link: assumption, Ethernet-class
     m.net.host_per_byte_s = 1e-6; // ~1 MB/s: assumption
     m.cost = i386_costs();
+    m.cost_calibrated = calibrated::kFitted;
     v.push_back(m);
   }
   {
@@ -92,7 +130,8 @@ std::vector<MachineSpec> make_specs() {
     m.net.switching = Switching::Circuit;
     m.net.host_startup_s = 1e-3;
     m.net.host_per_byte_s = 1e-6;
-    m.cost = i386_costs().scaled(1.0 / 8.0);
+    m.cost = i860_costs();
+    m.cost_calibrated = calibrated::kFitted;
     v.push_back(m);
   }
   {
@@ -108,7 +147,8 @@ std::vector<MachineSpec> make_specs() {
     m.net.switching = Switching::StoreAndForward;
     m.net.host_startup_s = 1e-3;
     m.net.host_per_byte_s = 1e-6;
-    m.cost = i386_costs().scaled(1.0 / 8.0);
+    m.cost = i860_costs();
+    m.cost_calibrated = calibrated::kFitted;
     v.push_back(m);
   }
   return v;

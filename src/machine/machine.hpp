@@ -57,6 +57,22 @@ struct MachineSpec {
   bool cost_calibrated = false;
 };
 
+// The calibration fits one multiplier per group of cost fields: fields of a group are the same kind
+// of work (geometry per triangle or vertex, per span or row, per pixel, ...) and scale together.
+struct CostGroup {
+  std::string name;
+  std::vector<std::string> fields; // Counters field names
+};
+const std::vector<CostGroup>& cost_groups();
+// Multiplies every field of group g by scale[g].
+CostTable scale_groups(const CostTable& t, const std::vector<double>& scale);
+// The placeholder table the calibration starts from: compiled C on a 16 MHz 80386 + 80387 node.
+CostTable prior_i386_costs();
+// The calibrated tables (calibrated_costs.hpp): the iPSC/2's 80386, and the i860 of the iPSC/860
+// and the Volvox (the same 40 MHz part: one table, by clock and architecture ratio).
+CostTable i386_costs();
+CostTable i860_costs();
+
 const std::vector<std::string>& machine_names();
 // The built-in model of a machine; UsageError for an unknown name.
 const MachineSpec& machine_spec(const std::string& name);

@@ -127,7 +127,7 @@ ActivePixels merge_active(const ActivePixels& a, const ActivePixels& b, Counters
     }
     r.row_begin[y - a.y0 + 1] = std::uint32_t(r.pixels.size());
   }
-  c.merge_ops += b.pixels.size();
+  c.merge_ops += a.pixels.size() + b.pixels.size();
   return r;
 }
 

@@ -65,8 +65,9 @@ ActivePixels zbuffer_spans(const SpanLists& lists, const TriangleBatch& batch,
 ActivePixels slice_rows(const ActivePixels& a, int y0, int y1);
 
 // Merges two pixel sets over the same rows: per row a merge of two x-sorted lists, the nearer
-// pixel (depth, then lower id) winning at equal x. Every pixel of `received` is one merge
-// operation (c.merge_ops): compared with a retained pixel or inserted among them.
+// pixel (depth, then lower id) winning at equal x. Every pixel of either set is visited once (a
+// comparison or a copy into the result): |retained| + |received| merge operations (c.merge_ops),
+// the unit of a full z-buffer merge, which visits every location of its region once.
 ActivePixels merge_active(const ActivePixels& retained, const ActivePixels& received, Counters& c);
 
 // The rows of `a` for which keep(y) holds (the others emptied), over the same row range.

@@ -8,6 +8,7 @@ namespace zc {
 
 void SimContext::charge(const Counters& w) {
   work_ += w;
+  phase_work_[open_.empty() ? std::string() : open_.back().first] += w;
   const double s = cost_.seconds(w);
   if (s > 0) {
     simgrid::s4u::this_actor::sleep_for(s);
@@ -41,6 +42,10 @@ void SimContext::release(double bytes) {
 
 void SimContext::deliver_image(int frame, Framebuffer image) {
   images_.push_back({frame, std::move(image)});
+}
+
+void SimContext::deliver_rows(int frame, Framebuffer rows) {
+  images_.push_back({frame, std::move(rows), true});
 }
 
 } // namespace zc

@@ -14,6 +14,7 @@ namespace zc {
 struct FrameImage {
   int frame;
   Framebuffer image;
+  bool partial = false; // rows of the frame (deliver_rows), pasted together after the run
 };
 
 class SimContext final : public NodeContext {
@@ -32,11 +33,15 @@ public:
   void alloc(double bytes, const std::string& what) override;
   void release(double bytes) override;
   void deliver_image(int frame, Framebuffer image) override;
+  void deliver_rows(int frame, Framebuffer rows) override;
   nlohmann::json& metrics() override { return metrics_; }
 
   const Counters& work() const { return work_; }
   const std::map<std::string, double>& phase_totals() const { return phase_totals_; }
   const std::vector<std::string>& phase_order() const { return phase_order_; }
+  // Operations charged inside each phase (the innermost open one; "" outside every phase): with the
+  // phase durations, the linear model the calibration fits (time = counts x costs + waiting).
+  const std::map<std::string, Counters>& phase_work() const { return phase_work_; }
 
 private:
   SimComm& comm_;
@@ -49,6 +54,7 @@ private:
   Counters work_;
   std::vector<std::pair<std::string, double>> open_;
   std::map<std::string, double> phase_totals_;
+  std::map<std::string, Counters> phase_work_;
   std::vector<std::string> phase_order_;
   nlohmann::json metrics_ = nlohmann::json::object();
 };

@@ -1,7 +1,6 @@
 #include "sim/simulation.hpp"
 
 #include <sys/resource.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -9,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 
 #include <simgrid/s4u.hpp>
@@ -19,6 +19,7 @@
 #include "raster/image_io.hpp"
 #include "raster/renderer.hpp"
 #include "scene/load.hpp"
+#include "sim/batch.hpp"
 #include "sim/sim_context.hpp"
 #include "util/error.hpp"
 
@@ -286,6 +287,14 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
     nlohmann::json ph = nlohmann::json::object();
     for (const auto& [n, t] : ctxs[r]->phase_totals())
       ph[n] = t;
+    // Operations per phase, zero counts left out (the calibration's linear model).
+    nlohmann::json pw = nlohmann::json::object();
+    for (const auto& [n, w] : ctxs[r]->phase_work()) {
+      nlohmann::json cj = w, nz = nlohmann::json::object();
+      for (auto& [k, v] : cj.items())
+        if (v.get<std::uint64_t>() != 0) nz[k] = v;
+      if (!nz.empty()) pw[n.empty() ? "(no phase)" : n] = nz;
+    }
     j["per_node"].push_back({{"rank", r == P ? nlohmann::json("srm") : nlohmann::json(r)},
                              {"busy_s", s.busy_s},
                              {"comm_s", s.comm_s},
@@ -293,7 +302,8 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
                              {"bytes_sent", s.bytes_sent},
                              {"messages", s.messages},
                              {"peak_memory_bytes", s.peak_memory},
-                             {"phases", ph}});
+                             {"phases", ph},
+                             {"phase_work", pw}});
     if (!ctxs[r]->metrics().empty()) j["per_node"].back()["metrics"] = ctxs[r]->metrics();
   }
   // Defaults of the DESIGN §4 keys an algorithm may refine through its metrics (Kurc et al.
@@ -332,6 +342,27 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
       {"switching", pm.net.switching == Switching::Circuit ? "circuit" : "store-and-forward"},
       {"node_memory_bytes", pm.memory.empty() ? 0.0 : pm.memory[0]}};
 
+  // Rows delivered straight to the output device: pasted into one picture per frame.
+  {
+    std::map<int, Framebuffer> composed;
+    std::vector<FrameImage> whole;
+    for (auto& fi : images) {
+      if (!fi.partial) {
+        whole.push_back(std::move(fi));
+        continue;
+      }
+      auto it = composed.find(fi.frame);
+      if (it == composed.end())
+        it = composed
+                 .emplace(fi.frame,
+                          Framebuffer(scene.width, RowSet::all(scene.height), scene.background))
+                 .first;
+      it->second.paste(fi.image);
+    }
+    for (auto& [f, fb] : composed)
+      whole.push_back({f, std::move(fb)});
+    images = std::move(whole);
+  }
   // Images, in frame order, against the host's sequential renderer.
   std::sort(images.begin(), images.end(),
             [](const FrameImage& a, const FrameImage& b) { return a.frame < b.frame; });
@@ -362,40 +393,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
 }
 
 nlohmann::json run_simulation_isolated(const SimConfig& cfg) {
-  int fds[2];
-  if (pipe(fds) != 0) throw std::runtime_error("pipe failed");
-  std::fflush(nullptr);
-  const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error("fork failed");
-  if (pid == 0) {
-    close(fds[0]);
-    std::string out;
-    try {
-      out = run_simulation(cfg).report.dump();
-    } catch (const std::exception& ex) {
-      out = nlohmann::json{{"status", "error"}, {"error", ex.what()}}.dump();
-    }
-    std::size_t off = 0;
-    while (off < out.size()) {
-      const ssize_t n = write(fds[1], out.data() + off, out.size() - off);
-      if (n <= 0) break;
-      off += std::size_t(n);
-    }
-    close(fds[1]);
-    _exit(0);
-  }
-  close(fds[1]);
-  std::string in;
-  char buf[65536];
-  for (ssize_t n; (n = read(fds[0], buf, sizeof buf)) > 0;)
-    in.append(buf, std::size_t(n));
-  close(fds[0]);
-  int status = 0;
-  waitpid(pid, &status, 0);
-  if (in.empty())
-    return {{"status", "error"},
-            {"error", "simulation process died (status " + std::to_string(status) + ")"}};
-  return nlohmann::json::parse(in);
+  return run_batch({cfg}, 1).front();
 }
 
 } // namespace zc

@@ -1,0 +1,117 @@
+#include "repro/paper_figures.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+namespace zc {
+
+const std::vector<std::string>& kurc_scenes() {
+  static const std::vector<std::string> s = {"1pot",   "2pot",   "4pot_1",
+                                             "4pot_2", "8pot_1", "8pot_2"};
+  return s;
+}
+
+const std::vector<std::string>& kurc_phases() {
+  static const std::vector<std::string> p = {"span_list_creation", "local_zbuffer",
+                                             "pixel_merging"};
+  return p;
+}
+
+const std::vector<KurcPhaseFigure>& kurc_table2_p16() {
+  static const std::vector<KurcPhaseFigure> t = [] {
+    // Table 2, P = 16 rows: PAIR-RS then ZBUF-EXC, three phases each (ms).
+    const struct {
+      const char* scene;
+      double pair[3], zbuf[3];
+    } rows[] = {{"1pot", {322, 434, 348}, {316, 578, 2015}},
+                {"2pot", {481, 471, 341}, {470, 585, 1940}},
+                {"4pot_1", {1038, 520, 323}, {1015, 647, 1930}},
+                {"4pot_2", {1124, 579, 408}, {1099, 702, 1958}},
+                {"8pot_1", {2142, 1079, 684}, {2104, 1128, 2043}},
+                {"8pot_2", {2087, 701, 451}, {2029, 805, 1958}}};
+    std::vector<KurcPhaseFigure> v;
+    for (const auto& r : rows)
+      for (int s = 0; s < 2; ++s)
+        for (int p = 0; p < 3; ++p)
+          v.push_back({r.scene, s == 0 ? "pair-rs" : "zbuf-exc", kurc_phases()[std::size_t(p)],
+                       s == 0 ? r.pair[p] : r.zbuf[p]});
+    return v;
+  }();
+  return t;
+}
+
+const std::vector<CharlesSpeedupFigure>& charles_teapot_speedups() {
+  static const std::vector<CharlesSpeedupFigure> f = {{8, 5.6}, {16, 8.3}};
+  return f;
+}
+
+namespace {
+
+std::string scene_key(const nlohmann::json& report) {
+  const std::filesystem::path p(report["scene"].value("path", ""));
+  return p.parent_path().filename().string() + "/" + p.stem().string();
+}
+
+bool is(const nlohmann::json& r, const char* key, const std::string& v) {
+  return r.contains(key) && r[key].is_string() && r[key].get<std::string>() == v;
+}
+
+bool sized(const nlohmann::json& r, int n) {
+  return r["scene"].value("width", 0) == n && r["scene"].value("height", 0) == n;
+}
+
+const CharlesSpeedupFigure* charles_match(const nlohmann::json& r) {
+  if (!is(r, "algorithm", "elastic") || !is(r, "machine", "ipsc860") ||
+      !is(r, "topology", "cube") || !sized(r, kCharlesTeapotSize) ||
+      scene_key(r) != "scenes/teapot")
+    return nullptr;
+  for (const auto& f : charles_teapot_speedups())
+    if (r.value("nodes", 0) == f.nodes) return &f;
+  return nullptr;
+}
+
+double rel_error(double predicted, double paper) {
+  return (predicted - paper) / paper;
+}
+
+} // namespace
+
+bool needs_sequential_time(const nlohmann::json& report) {
+  return charles_match(report) != nullptr;
+}
+
+nlohmann::json paper_figures_for(const nlohmann::json& r, std::optional<double> seq_s) {
+  nlohmann::json out = nlohmann::json::array();
+  if (!r.contains("scene") || r.value("status", "") != "ok") return out;
+  if (is(r, "machine", "ipsc2") && is(r, "topology", "cube") &&
+      r.value("nodes", 0) == kKurcTableNodes && sized(r, kKurcTableSize)) {
+    for (const auto& f : kurc_table2_p16()) {
+      if (!is(r, "algorithm", f.scheme) || scene_key(r) != "kurc/" + f.scene) continue;
+      nlohmann::json e = {{"source", "Kurc, Aykanat, Ozguc, Table 2"},
+                          {"quantity", "phase_ms"},
+                          {"phase", f.phase},
+                          {"paper", f.ms}};
+      for (const auto& p : r["phases"])
+        if (p["name"] == f.phase) {
+          const double ms = p["max_s"].get<double>() * 1e3;
+          e["predicted"] = ms;
+          e["rel_error"] = rel_error(ms, f.ms);
+        }
+      out.push_back(e);
+    }
+  }
+  if (const CharlesSpeedupFigure* f = charles_match(r)) {
+    nlohmann::json e = {{"source", "Charles, Lefevre, Miguet 1995, section 6 (teapot, hypercube)"},
+                        {"quantity", "speedup"},
+                        {"paper", f->speedup}};
+    if (seq_s) {
+      const double s = *seq_s / r["virtual_time_s"].get<double>();
+      e["predicted"] = s;
+      e["rel_error"] = rel_error(s, f->speedup);
+    }
+    out.push_back(e);
+  }
+  return out;
+}
+
+} // namespace zc

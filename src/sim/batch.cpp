@@ -1,0 +1,119 @@
+#include "sim/batch.hpp"
+
+#include <poll.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <thread>
+
+namespace zc {
+
+namespace {
+
+struct Child {
+  pid_t pid = -1;
+  int fd = -1;
+  std::size_t index = 0;
+  std::string out;
+};
+
+// In the child: run, write the report (or the error) to fd, exit without running the parent's
+// atexit handlers or flushing its buffers twice.
+[[noreturn]] void child_main(const SimConfig& cfg, int fd) {
+  std::string out;
+  try {
+    out = run_simulation(cfg).report.dump();
+  } catch (const std::exception& ex) {
+    out = nlohmann::json{{"status", "error"}, {"error", ex.what()}}.dump();
+  }
+  std::size_t off = 0;
+  while (off < out.size()) {
+    const ssize_t n = write(fd, out.data() + off, out.size() - off);
+    if (n <= 0) break;
+    off += std::size_t(n);
+  }
+  close(fd);
+  _exit(0);
+}
+
+nlohmann::json finish(Child& c) {
+  close(c.fd);
+  int status = 0;
+  while (waitpid(c.pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (!c.out.empty()) {
+    try {
+      return nlohmann::json::parse(c.out);
+    } catch (const std::exception&) {
+    }
+  }
+  std::string why = WIFSIGNALED(status)
+                        ? std::string("killed by signal ") + strsignal(WTERMSIG(status))
+                        : "exit status " + std::to_string(WEXITSTATUS(status));
+  return {{"status", "error"}, {"error", "simulation process died (" + why + ")"}};
+}
+
+} // namespace
+
+int default_jobs() {
+  return std::max(1, int(std::thread::hardware_concurrency()));
+}
+
+std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int jobs,
+                                      const std::function<void(const BatchProgress&)>& progress) {
+  std::vector<nlohmann::json> reports(points.size());
+  std::vector<Child> running;
+  BatchProgress pr;
+  pr.total = points.size();
+  std::size_t next = 0;
+  jobs = std::max(1, jobs);
+  while (next < points.size() || !running.empty()) {
+    while (next < points.size() && int(running.size()) < jobs) {
+      int fds[2];
+      if (pipe(fds) != 0) throw std::runtime_error("pipe failed");
+      std::fflush(nullptr);
+      const pid_t pid = fork();
+      if (pid < 0) throw std::runtime_error("fork failed");
+      if (pid == 0) {
+        close(fds[0]);
+        for (const Child& c : running)
+          close(c.fd);
+        child_main(points[next], fds[1]);
+      }
+      close(fds[1]);
+      running.push_back({pid, fds[0], next, {}});
+      ++next;
+    }
+    std::vector<pollfd> pfd;
+    for (const Child& c : running)
+      pfd.push_back({c.fd, POLLIN, 0});
+    if (poll(pfd.data(), pfd.size(), -1) < 0) {
+      if (errno == EINTR) continue;
+      throw std::runtime_error("poll failed");
+    }
+    for (std::size_t i = running.size(); i-- > 0;) {
+      if (!(pfd[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+      char buf[65536];
+      const ssize_t n = read(running[i].fd, buf, sizeof buf);
+      if (n > 0) {
+        running[i].out.append(buf, std::size_t(n));
+        continue;
+      }
+      if (n < 0 && errno == EINTR) continue;
+      nlohmann::json rep = finish(running[i]);
+      if (rep.value("status", "error") == "error") ++pr.failed;
+      reports[running[i].index] = std::move(rep);
+      running.erase(running.begin() + std::ptrdiff_t(i));
+      ++pr.done;
+      if (progress) progress(pr);
+    }
+  }
+  return reports;
+}
+
+} // namespace zc
