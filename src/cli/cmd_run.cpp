@@ -2,16 +2,38 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
 #include "cli/sim_options.hpp"
 #include "raster/image_io.hpp"
+#include "repro/paper_figures.hpp"
+#include "scene/load.hpp"
 #include "util/image_size.hpp"
 
 namespace zc::cli {
 
 std::string default_scene_path(); // cmd_render.cpp
+
+// The report fields a paper figure is matched on, known before the run (the scene's own size
+// unless --size overrides it).
+static nlohmann::json report_header(const SimConfig& cfg) {
+  int w = cfg.width, h = cfg.height;
+  if (w <= 0 || h <= 0) {
+    const Scene s = load_scene(cfg.scene_path, LoadOptions{});
+    w = s.width;
+    h = s.height;
+  }
+  return {{"status", "ok"},
+          {"algorithm", cfg.algorithm},
+          {"machine", cfg.machine},
+          {"topology", topology_name(cfg.topology)},
+          {"nodes", cfg.nodes},
+          {"virtual_time_s", 1.0},
+          {"phases", nlohmann::json::array()},
+          {"scene", {{"path", cfg.scene_path}, {"width", w}, {"height", h}}}};
+}
 
 static int cmd_run(std::vector<std::string> args) {
   CLI::App app{"Simulate a parallel z-buffer algorithm on a 1990s machine model", "zcube run"};
@@ -56,7 +78,22 @@ static int cmd_run(std::vector<std::string> args) {
     cfg.width = s.width;
     cfg.height = s.height;
   }
+  // A speed-up figure of a paper needs the sequential time on the same machine: one more
+  // simulation, in its own process and before this one (a forked child must not inherit a
+  // SimGrid engine).
+  std::optional<double> seq_s;
+  if (cfg.algorithm == "elastic" && cfg.machine == "ipsc860" && // cheap tests before loading
+      needs_sequential_time(report_header(cfg))) {
+    SimConfig seq = cfg;
+    seq.algorithm = "sequential";
+    seq.nodes = 1;
+    seq.options = AlgorithmOptions{};
+    seq.compare_with_sequential = false;
+    const auto sr = run_simulation_isolated(seq);
+    if (sr.value("status", "") == "ok") seq_s = sr["virtual_time_s"].get<double>();
+  }
   SimResult r = run_simulation(cfg);
+  if (r.ok && seq_s) r.report["paper"] = paper_figures_for(r.report, seq_s);
   if (!report.empty()) std::ofstream(report) << r.report.dump(2) << "\n";
   if (!r.ok) {
     std::cerr << "zcube: error: " << r.error << "\n";
@@ -72,6 +109,16 @@ static int cmd_run(std::vector<std::string> args) {
   for (const auto& p : j["phases"])
     std::cout << "  " << std::left << std::setw(28) << p["name"].get<std::string>() << " max "
               << p["max_s"].get<double>() << " s\n";
+  if (j.contains("paper"))
+    for (const auto& f : j["paper"]) {
+      std::cout << "paper: " << f["source"].get<std::string>() << ": "
+                << (f.contains("phase") ? f["phase"].get<std::string>() + " " : "")
+                << f["quantity"].get<std::string>() << " " << f["paper"].get<double>();
+      if (f.contains("predicted"))
+        std::cout << ", predicted " << f["predicted"].get<double>() << " (error " << std::showpos
+                  << 100 * f["rel_error"].get<double>() << std::noshowpos << " %)";
+      std::cout << "\n";
+    }
   if (j["image"].contains("identical_to_sequential"))
     std::cout << "image identical to the sequential renderer's: "
               << j["image"]["identical_to_sequential"] << "\n";

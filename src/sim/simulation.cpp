@@ -18,6 +18,7 @@
 #include "machine/units.hpp"
 #include "raster/image_io.hpp"
 #include "raster/renderer.hpp"
+#include "repro/paper_figures.hpp"
 #include "scene/load.hpp"
 #include "sim/batch.hpp"
 #include "sim/sim_context.hpp"
@@ -386,6 +387,8 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   j["image"] = img;
   for (auto& fi : images)
     res.images.push_back(std::move(fi.image));
+  // The seeds' figures this run corresponds to, with the relative error (repro/paper_figures).
+  if (auto paper = paper_figures_for(j); !paper.empty()) j["paper"] = paper;
   j["host"] = {{"wall_time_s",
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count()},
                {"peak_rss_bytes", peak_rss_bytes()}};

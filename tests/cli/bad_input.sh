@@ -30,4 +30,14 @@ check size-huge "--size" "$zcube" render --size 100000x100000 --image "$tmp/x.pn
 check size-garbage "--size" "$zcube" render --size banana --image "$tmp/x.png"
 check missing-scene "nope.json" "$zcube" render --scene "$tmp/nope.json" --image "$tmp/x.png"
 check unknown-command "unknown command" "$zcube" frobnicate
+# The reproduction and study commands.
+check sweep-empty-item "--nodes" "$zcube" sweep --nodes 1,,2 --out "$tmp/sw"
+check sweep-no-flag "sweep" "$zcube" sweep --out "$tmp/sw"
+check regress-nothing "regress" "$zcube" regress
+echo '{"runs": 3}' >"$tmp/runs.json"
+check regress-bad-runs "runs.json" "$zcube" regress --runs "$tmp/runs.json" --against "$tmp"
+echo '{"runs": [{"name": "a", "bogus": "1"}]}' >"$tmp/runs2.json"
+check regress-bad-flag "bogus" "$zcube" regress --runs "$tmp/runs2.json" --against "$tmp"
+check regress-no-dir "nope" "$zcube" regress --against "$tmp/nope" --with "$tmp"
+check reproduce-unknown-paper "paper" "$zcube" reproduce frobnicate
 exit $fail

@@ -1,6 +1,8 @@
 // Charles, Lefevre, Miguet 1995 on the simulated iPSC/860 and Volvox: the image of every
 // configuration is the sequential renderer's, the elastic slices balance the estimated load, the
 // request variant moves fewer bytes than the multi-broadcast.
+#include <map>
+
 #include <gtest/gtest.h>
 
 #include "sim_fixtures.hpp"
@@ -102,5 +104,35 @@ TEST(Elastic, EmptySceneAndOneScanlineFinish) {
     EXPECT_GT(total, 0);
     EXPECT_EQ(o["elastic"]["max_row_load"].get<std::int64_t>(), total);
     EXPECT_EQ(nonzero, 1);
+  }
+}
+
+// §4 "write the image to an output device" and §6 "the communication volume is independent of
+// the resolution": with --output device no picture travels; with --output gather node 0 receives
+// every other slice's colours. Both give the sequential image.
+TEST(Elastic, OutputDeviceSendsNoPictureAndGatherSendsTheOtherSlices) {
+  for (int size : {96, 192}) {
+    std::map<std::string, nlohmann::json> r;
+    for (const char* out : {"device", "gather"}) {
+      SimConfig c = sim_config("ipsc860", 4, Topology::Cube, Fidelity::Circuit);
+      c.algorithm = "elastic";
+      c.scene_path = kTeapot;
+      c.width = c.height = size;
+      c.options.values["output"] = out;
+      c.compare_with_sequential = true;
+      r[out] = run_simulation_isolated(c);
+      ASSERT_EQ(r[out]["status"], "ok") << r[out].dump();
+      EXPECT_EQ(r[out]["image"]["identical_to_sequential"], true) << out << " " << size;
+    }
+    const auto& slices = r["gather"]["elastic"]["slices"];
+    std::uint64_t other_rows = 0;
+    for (const auto& s : slices)
+      if (s["node"] != 0) other_rows += s["rows"].get<std::uint64_t>();
+    const std::uint64_t picture = 3 * other_rows * std::uint64_t(size);
+    // A binomial-tree gather forwards some slices twice: at least the picture, less than twice.
+    const std::uint64_t extra = r["gather"]["communication"]["bytes"].get<std::uint64_t>() -
+                                r["device"]["communication"]["bytes"].get<std::uint64_t>();
+    EXPECT_GE(extra, picture) << size;
+    EXPECT_LT(extra, 2 * picture) << size;
   }
 }

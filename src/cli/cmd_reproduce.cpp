@@ -1,0 +1,36 @@
+// zcube reproduce: the papers' tables and speed-up curves (repro/reproduce.hpp).
+#include "cli/command.hpp"
+#include "cli/parse.hpp"
+#include "cli/paths.hpp"
+#include "repro/reproduce.hpp"
+#include "sim/batch.hpp"
+
+namespace zc::cli {
+
+static int cmd_reproduce(std::vector<std::string> args) {
+  CLI::App app{"Reproduce the papers' tables and speed-up curves on the calibrated machines",
+               "zcube reproduce"};
+  ReproduceOptions o;
+  o.root = source_root();
+  o.out = "results";
+  o.jobs = default_jobs();
+  std::string which = "all";
+  bool no_plots = false;
+  app.add_option("paper", which, "kurc, charles, blazek or all")
+      ->check(CLI::IsMember({"kurc", "charles", "blazek", "all"}))
+      ->capture_default_str();
+  app.add_option("--out", o.out, "output directory")->capture_default_str();
+  app.add_option("--jobs", o.jobs, "simulations at once (each its own process)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_flag("--full", o.full, "Blazek's whole grid: 1..2048 spheres (about an hour)");
+  app.add_flag("--no-plots", no_plots, "skip the PNG plots");
+  if (int rc = parse(app, args); rc >= 0) return rc;
+  o.plots = !no_plots;
+  if (which != "all") o.papers = {which};
+  return reproduce(o);
+}
+
+ZC_COMMAND("reproduce", "reproduce the papers' tables and curves (the main job)", cmd_reproduce);
+
+} // namespace zc::cli

@@ -1,0 +1,98 @@
+// zcube sweep: the Cartesian product of list-valued run flags, each point its own simulation
+// process (repro/sweep.hpp), with a CSV, a JSON and a plot of the swept quantity.
+#include <iostream>
+
+#include "cli/command.hpp"
+#include "cli/parse.hpp"
+#include "cli/paths.hpp"
+#include "repro/progress.hpp"
+#include "repro/reproduce.hpp"
+#include "repro/sweep.hpp"
+#include "sim/batch.hpp"
+#include "util/error.hpp"
+
+namespace zc::cli {
+
+std::string default_scene_path(); // cmd_render.cpp
+
+static std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) {
+    if (c == '\'')
+      q += "'\\''";
+    else
+      q += c;
+  }
+  q += '\'';
+  return q;
+}
+
+static int cmd_sweep(std::vector<std::string> args) {
+  CLI::App app{"Run the Cartesian product of comma-separated flag values, one process a point "
+               "(e.g. --nodes 1,2,4,8 --latency 10us,275us --algorithm pair-rs,aapc-hbp)",
+               "zcube sweep"};
+  std::map<std::string, std::string> given;
+  for (const auto& f : sweep_flags())
+    app.add_option("--" + f, given[f], "comma-separated values of zcube run --" + f);
+  std::string out = "sweep", plot_x, plot_y = "virtual_s";
+  int jobs = default_jobs();
+  bool no_plot = false;
+  app.add_option("--out", out, "directory for sweep.csv, sweep.json, sweep.png")
+      ->capture_default_str();
+  app.add_option("--jobs", jobs, "points at once")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  app.add_option("--plot-x", plot_x,
+                 "flag on the plot's x axis (default: the first with several values)");
+  app.add_option("--plot-y", plot_y, "column on the plot's y axis")->capture_default_str();
+  app.add_flag("--no-plot", no_plot, "skip the plot");
+  if (int rc = parse(app, args); rc >= 0) return rc;
+
+  std::vector<SweepAxis> axes;
+  for (const auto& f : sweep_flags())
+    if (!given[f].empty()) axes.push_back({f, split_list(given[f], f)});
+  if (axes.empty()) throw UsageError("sweep: give at least one flag, e.g. --nodes 1,2,4,8");
+  if (plot_x.empty())
+    for (const auto& ax : axes)
+      if (ax.values.size() > 1) {
+        plot_x = ax.flag;
+        break;
+      }
+  const auto points = expand_sweep(axes, default_scene_path());
+  std::vector<SimConfig> cfgs;
+  std::vector<std::size_t> runnable;
+  for (std::size_t i = 0; i < points.size(); ++i)
+    if (points[i].config) {
+      cfgs.push_back(*points[i].config);
+      runnable.push_back(i);
+    }
+  std::cerr << "sweep: " << points.size() << " points (" << points.size() - cfgs.size()
+            << " invalid), " << jobs << " at a time\n";
+  const auto ran = run_batch(cfgs, jobs, progress_printer("sweep"));
+  std::vector<nlohmann::json> reports(points.size(), nlohmann::json::object());
+  for (std::size_t k = 0; k < runnable.size(); ++k)
+    reports[runnable[k]] = ran[k];
+  const nlohmann::json rows = sweep_rows(axes, points, reports);
+  write_sweep(axes, rows, reports, out);
+  int failed = 0;
+  for (const auto& r : rows)
+    if (r["status"] == "error") {
+      ++failed;
+      std::cerr << "sweep: point " << r["index"] << " failed: " << r["error"].get<std::string>()
+                << "\n";
+    }
+  if (!no_plot && !plot_x.empty()) {
+    const std::string cmd = python3() + " " +
+                            shell_quote(source_root() + "/scripts/plot_results.py") + " --sweep " +
+                            shell_quote(out + "/sweep.csv") + " " + shell_quote(plot_x) + " " +
+                            shell_quote(plot_y) + " " + shell_quote(out + "/sweep.png");
+    if (std::system(cmd.c_str()) != 0) std::cerr << "sweep: plot not drawn\n";
+  }
+  std::cout << "sweep: " << rows.size() << " points, " << failed << " failed; wrote " << out
+            << "/sweep.csv, sweep.json" << (no_plot || plot_x.empty() ? "" : ", sweep.png") << "\n";
+  return failed ? 1 : 0;
+}
+
+ZC_COMMAND("sweep", "run the Cartesian product of flag values (what-if studies)", cmd_sweep);
+
+} // namespace zc::cli

@@ -1,0 +1,44 @@
+#pragma once
+// Regression of simulated timings: a standard set of runs (tests/golden/runs.json) whose reduced
+// reports (virtual times, phase times, image hashes, message counts, operation counts) are kept as
+// golden files; any change of one of them is a difference. Used by the test suite and by users
+// comparing two versions or two platform files (`zcube regress`).
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace zc {
+
+struct RegressRun {
+  std::string name;
+  std::map<std::string, std::string> flags; // zcube run flags (repro/sweep.hpp sweep_flags)
+};
+
+// Reads a runs file ({"runs": [{"name": ..., flag: value, ...}]}); InputError on a bad file.
+std::vector<RegressRun> read_regress_runs(const std::string& path);
+
+// Runs them (each in its own process, `jobs` at a time) and returns the reduced reports by name.
+// Scene paths are relative to `root`; `set` overrides flags of every run.
+std::map<std::string, nlohmann::json> run_regress(const std::vector<RegressRun>& runs,
+                                                  const std::string& root, int jobs,
+                                                  const std::map<std::string, std::string>& set);
+
+// The part of a report that must not change: status, virtual time, phases, image hash, message and
+// byte counts, operation counts, memory peak.
+nlohmann::json reduce_report(const nlohmann::json& report);
+
+struct RegressDiff {
+  std::string run, quantity, before, after;
+  double rel = 0; // relative change of a number (0 for text)
+};
+// Every difference between two reduced reports (a missing run on either side is one too).
+std::vector<RegressDiff> compare_reduced(const std::map<std::string, nlohmann::json>& before,
+                                         const std::map<std::string, nlohmann::json>& after);
+
+// A directory of <name>.json reduced reports.
+std::map<std::string, nlohmann::json> read_report_dir(const std::string& dir);
+void write_report_dir(const std::map<std::string, nlohmann::json>& reps, const std::string& dir);
+
+} // namespace zc

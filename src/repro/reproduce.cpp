@@ -1,0 +1,146 @@
+#include "repro/reproduce.hpp"
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include "repro/progress.hpp"
+#include "repro/table.hpp"
+#include "sim/batch.hpp"
+#include "util/error.hpp"
+
+namespace zc {
+
+namespace {
+
+std::string shell_quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s)
+    q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+std::string top_readme(const ReproduceOptions& o, double wall_s, std::size_t points,
+                       const std::string& fidelity_md) {
+  std::string papers;
+  for (const auto& p : o.papers)
+    papers += (papers.empty() ? "" : " ") + p;
+  return "# zcube results: the papers reproduced on calibrated machine models\n\n"
+         "Written by `zcube reproduce " +
+         papers + (o.full ? " --full" : "") +
+         "` (src/repro/). Every number is a deterministic output of the simulator, "
+         "except the host wall times (`wall_s`, `host_cost.csv`).\n\n"
+         "| folder | paper | what |\n|---|---|---|\n"
+         "| [calibration/](calibration/README.md) | Kurc Table 2, Charles §6 | the fitted CPU "
+         "cost tables and the residual of every target (`zcube calibrate`) |\n"
+         "| [kurc/](kurc/README.md) | Kurc, Aykanat, Ozguc | Table 2 phases at 8 and 16 nodes, "
+         "speed-ups of the five merging schemes |\n"
+         "| [charles/](charles/README.md) | Charles, Lefevre, Miguet 1995 | speed-ups of the "
+         "elastic z-buffer, hypercube and ring; Table 1 |\n"
+         "| [blazek/](blazek/README.md) | Blazek 1991 | speed-up and efficiency of the four "
+         "decompositions |\n\n"
+         "This run: " +
+         std::to_string(points) + " simulations in " + fixed(wall_s, 1) + " s of host wall time (" +
+         std::to_string(o.jobs) +
+         " at a time).\n\n"
+         "## Error against run time (fidelity.csv, fidelity.png)\n\n"
+         "The same runs under the three network models; the error is against `circuit` (the "
+         "reference: each message holds its channels in dimension order, as the iPSC's "
+         "Direct-Connect Module). `analytic` ignores contention, `flow` shares bandwidth "
+         "(SimGrid's CM02). Wall times are the host's and vary from run to run.\n\n" +
+         fidelity_md;
+}
+
+} // namespace
+
+std::string python3() {
+  // Debian's interpreter first: its python3-matplotlib is the one scripts/setup.sh installs (a
+  // python3 earlier on PATH, e.g. pyenv's, may not have it).
+  return std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+}
+
+int reproduce(const ReproduceOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<PaperPlan> plans;
+  for (const auto& p : o.papers) {
+    if (p == "kurc")
+      plans.push_back(kurc_plan(o));
+    else if (p == "charles")
+      plans.push_back(charles_plan(o));
+    else if (p == "blazek")
+      plans.push_back(blazek_plan(o));
+    else
+      throw UsageError("reproduce: unknown paper '" + p + "' (kurc, charles, blazek or all)");
+  }
+  const bool all = o.papers.size() == 3;
+  if (all) plans.push_back(fidelity_plan(o));
+
+  std::vector<SimConfig> cfgs;
+  for (const auto& p : plans)
+    for (const auto& pt : p.points)
+      cfgs.push_back(pt.cfg);
+  if (o.verbose)
+    std::cerr << "reproduce: " << cfgs.size() << " simulations, " << o.jobs << " at a time\n";
+  const auto reps = run_batch(cfgs, o.jobs,
+                              o.verbose ? progress_printer("reproduce")
+                                        : std::function<void(const BatchProgress&)>{});
+
+  int status = 0;
+  std::size_t i = 0;
+  std::string fidelity_md;
+  for (const auto& p : plans) {
+    Reports r;
+    for (const auto& pt : p.points) {
+      const auto& rep = reps[i++];
+      if (rep.value("status", "") == "error") {
+        std::cerr << "reproduce: " << (p.name.empty() ? "fidelity" : p.name) << " point " << pt.key
+                  << " failed: " << rep.value("error", "?") << "\n";
+        status = 1;
+      } else if (ok(rep) && rep["image"].value("identical_to_sequential", true) == false) {
+        std::cerr << "reproduce: " << p.name << " point " << pt.key
+                  << ": image differs from the sequential renderer's\n";
+        status = 1;
+      }
+      r[pt.key] = rep;
+    }
+    const std::string dir = p.name.empty() ? o.out : o.out + "/" + p.name;
+    std::filesystem::create_directories(dir);
+    p.write(r, dir);
+    if (p.name.empty()) {
+      // fidelity.csv as a Markdown table for the top README.
+      std::ifstream f(dir + "/fidelity.csv");
+      std::string line;
+      Table t;
+      bool first = true;
+      while (std::getline(f, line)) {
+        std::vector<std::string> cells;
+        std::size_t a = 0;
+        for (std::size_t b; (b = line.find(',', a)) != std::string::npos; a = b + 1)
+          cells.push_back(line.substr(a, b - a));
+        cells.push_back(line.substr(a));
+        if (first)
+          t.header = cells;
+        else
+          t.add(cells);
+        first = false;
+      }
+      fidelity_md = t.markdown();
+    }
+  }
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (all) write_text(o.out + "/README.md", top_readme(o, wall, cfgs.size(), fidelity_md));
+
+  if (o.plots) {
+    const std::string cmd = python3() + " " + shell_quote(o.root + "/scripts/plot_results.py") +
+                            " " + shell_quote(o.out);
+    if (std::system(cmd.c_str()) != 0)
+      std::cerr << "reproduce: plots not drawn (needs python3-matplotlib: scripts/setup.sh "
+                   "installs it)\n";
+  }
+  if (o.verbose) std::cerr << "reproduce: wrote " << o.out << "/ in " << fixed(wall, 1) << " s\n";
+  return status;
+}
+
+} // namespace zc

@@ -1,0 +1,58 @@
+#pragma once
+// `zcube reproduce`: the papers' tables and speed-up curves on the calibrated machine models. Each
+// paper is a plan: the simulation points it needs (run together, each in its own process) and a
+// writer that turns their reports into fixed-name CSV files and a README.md side by side with the
+// paper's figures. Plots are drawn afterwards by scripts/plot_results.py from the CSV files.
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sim/simulation.hpp"
+
+namespace zc {
+
+struct ReproduceOptions {
+  std::string root = "."; // source tree: scenes/
+  std::string out = "results";
+  std::vector<std::string> papers = {"kurc", "charles", "blazek"};
+  bool full = false; // Blazek's whole grid (1..2048 spheres); slow
+  int jobs = 2;
+  bool plots = true;
+  bool verbose = true;
+};
+
+struct ReproPoint {
+  std::string key; // unique within a plan
+  SimConfig cfg;
+};
+using Reports = std::map<std::string, nlohmann::json>; // by point key
+
+struct PaperPlan {
+  std::string name; // the output subdirectory (empty: files at the top of `out`)
+  std::vector<ReproPoint> points;
+  // Writes the plan's files under dir from the reports of its points.
+  std::function<void(const Reports&, const std::string& dir)> write;
+};
+
+PaperPlan kurc_plan(const ReproduceOptions& o);
+PaperPlan charles_plan(const ReproduceOptions& o);
+PaperPlan blazek_plan(const ReproduceOptions& o);
+PaperPlan fidelity_plan(const ReproduceOptions& o); // fidelity.csv: error against run time
+
+// Runs the selected plans (and the fidelity table when all papers are selected), writes
+// everything, draws the plots; returns the process exit status (non-zero when a point failed in a
+// way that is not a modelled out-of-memory).
+int reproduce(const ReproduceOptions& o);
+
+// Helpers shared by the plans.
+SimConfig repro_config(const std::string& machine, int nodes, const std::string& algorithm,
+                       const std::string& scene, int size);
+double virtual_s(const nlohmann::json& report);
+bool ok(const nlohmann::json& report);
+bool out_of_memory(const nlohmann::json& report);
+std::string python3(); // the interpreter for scripts/plot_results.py
+
+} // namespace zc

@@ -1,0 +1,74 @@
+// Error against run time: a fixed set of runs under the three network fidelities (analytic, flow,
+// circuit). The circuit model (channels held in dimension order for the whole message, as the
+// Direct-Connect Module does) is the reference; the others trade accuracy under contention for
+// speed.
+#include "repro/reproduce.hpp"
+#include "repro/table.hpp"
+
+namespace zc {
+
+namespace {
+
+struct FidelityRun {
+  std::string name, machine, topology, algorithm, scene, option_key, option_value;
+  int nodes, size;
+  double memory_mib; // 0: the machine's
+};
+const std::vector<FidelityRun> kRuns = {
+    {"elastic-teapot-ipsc860-16", "ipsc860", "cube", "elastic", "scenes/teapot.json", "", "", 16,
+     256, 0},
+    {"elastic-teapot-volvox-ring-16", "volvox", "ring", "elastic", "scenes/teapot.json", "", "", 16,
+     256, 0},
+    {"pair-rs-1pot-ipsc2-16", "ipsc2", "cube", "pair-rs", "scenes/kurc/1pot.json", "", "", 16, 400,
+     0},
+    {"aapc-hbp-2pot-ipsc2-16", "ipsc2", "cube", "aapc-hbp", "scenes/kurc/2pot.json", "", "", 16,
+     400, 0},
+    {"zbuf-exc-1pot-ipsc2-16", "ipsc2", "cube", "zbuf-exc", "scenes/kurc/1pot.json", "", "", 16,
+     400, 0},
+    {"node-initiated-16-spheres-ipsc2-16", "ipsc2", "cube", "node-initiated",
+     "scenes/blazek/thesis_spheres_16.json", "", "", 16, 512, 16},
+    {"object-forwarding-4-spheres-ipsc2-16", "ipsc2", "cube", "object-forwarding",
+     "scenes/blazek/thesis_spheres_4.json", "forward", "object", 16, 512, 16},
+};
+const char* const kFidelities[] = {"analytic", "flow", "circuit"};
+
+std::string key(const FidelityRun& r, const char* f) {
+  return r.name + "/" + f;
+}
+
+void write_fidelity(const Reports& reps, const std::string& dir) {
+  Table t{{"run", "fidelity", "virtual_s", "rel_error", "wall_s"}, {}};
+  for (const auto& r : kRuns) {
+    const auto& ref = reps.at(key(r, "circuit"));
+    for (const char* f : kFidelities) {
+      const auto& rep = reps.at(key(r, f));
+      if (!ok(rep) || !ok(ref)) {
+        t.add({r.name, f, "error", "", ""});
+        continue;
+      }
+      const double v = virtual_s(rep), e = (v - virtual_s(ref)) / virtual_s(ref);
+      t.add({r.name, f, num(v), num(e, 4), num(rep["host"].value("wall_time_s", 0.0), 3)});
+    }
+  }
+  t.write_csv(dir + "/fidelity.csv");
+}
+
+} // namespace
+
+PaperPlan fidelity_plan(const ReproduceOptions& o) {
+  PaperPlan p;
+  p.name = "";
+  for (const auto& r : kRuns)
+    for (const char* f : kFidelities) {
+      SimConfig c = repro_config(r.machine, r.nodes, r.algorithm, o.root + "/" + r.scene, r.size);
+      c.topology = parse_topology(r.topology);
+      c.fidelity = parse_fidelity(f);
+      if (r.memory_mib > 0) c.overrides.memory_bytes = r.memory_mib * 1048576;
+      if (!r.option_key.empty()) c.options.values[r.option_key] = r.option_value;
+      p.points.push_back({key(r, f), c});
+    }
+  p.write = write_fidelity;
+  return p;
+}
+
+} // namespace zc

@@ -1,0 +1,49 @@
+#pragma once
+// `zcube sweep`: the Cartesian product of list-valued run flags (--nodes 1,2,4 --latency
+// 10us,1ms ...), each point one simulation in its own process. A point whose flags are invalid or
+// whose run fails keeps its row with the reason; the others are not affected.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sim/simulation.hpp"
+
+namespace zc {
+
+struct SweepAxis {
+  std::string flag;                // without dashes: "nodes", "latency", ...
+  std::vector<std::string> values; // one or more
+};
+
+// The flags a sweep accepts, in the order their columns appear.
+const std::vector<std::string>& sweep_flags();
+
+// Splits "1,2,4" (empty items are an error naming the flag).
+std::vector<std::string> split_list(const std::string& text, const std::string& flag);
+
+struct SweepPoint {
+  std::map<std::string, std::string> values; // flag -> value, for every axis
+  std::optional<SimConfig> config;           // empty when the flags are invalid
+  std::string error;                         // why not
+};
+
+// Every combination, the first axis varying slowest. `scene` is the default scene path.
+std::vector<SweepPoint> expand_sweep(const std::vector<SweepAxis>& axes, const std::string& scene);
+
+// The configuration of one point (UsageError/InputError on a bad value).
+SimConfig sweep_config(const std::map<std::string, std::string>& values, const std::string& scene);
+
+// One row per point: the axis values, then status, error, virtual_s, wall_s, messages, bytes,
+// concurrent_volume_bytes, load_imbalance, image_sha256, identical, and one "phase:<name>" column
+// (max over nodes, s) per phase any point has.
+nlohmann::json sweep_rows(const std::vector<SweepAxis>& axes, const std::vector<SweepPoint>& points,
+                          const std::vector<nlohmann::json>& reports);
+
+// sweep.csv and sweep.json under dir (the JSON has the rows and the full reports).
+void write_sweep(const std::vector<SweepAxis>& axes, const nlohmann::json& rows,
+                 const std::vector<nlohmann::json>& reports, const std::string& dir);
+
+} // namespace zc

@@ -1,0 +1,96 @@
+#include "repro/table.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace zc {
+
+namespace {
+
+std::string quote(const std::string& s) {
+  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  std::string q = "\"";
+  for (char c : s) {
+    if (c == '"') q += '"';
+    q += c;
+  }
+  q += '"';
+  return q;
+}
+
+std::string line(const std::vector<std::string>& cells) {
+  std::string l;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    if (i) l += ',';
+    l += quote(cells[i]);
+  }
+  l += '\n';
+  return l;
+}
+
+} // namespace
+
+std::string Table::csv() const {
+  std::string s = line(header);
+  for (const auto& r : rows)
+    s += line(r);
+  return s;
+}
+
+std::string Table::markdown() const {
+  std::string s = "|";
+  for (const auto& h : header) {
+    s += ' ';
+    s += h;
+    s += " |";
+  }
+  s += "\n|";
+  for (std::size_t i = 0; i < header.size(); ++i)
+    s += "---|";
+  s += "\n";
+  for (const auto& r : rows) {
+    s += "|";
+    for (const auto& c : r) {
+      s += ' ';
+      s += c;
+      s += " |";
+    }
+    s += "\n";
+  }
+  return s;
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  const std::filesystem::path p(path);
+  if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
+  std::ofstream f(path);
+  f << text;
+  if (!f) throw std::runtime_error(path + ": cannot write");
+}
+
+void Table::write_csv(const std::string& path) const {
+  write_text(path, csv());
+}
+
+std::string num(double v, int digits) {
+  std::ostringstream s;
+  s << std::setprecision(digits) << v;
+  return s.str();
+}
+
+std::string fixed(double v, int decimals) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(decimals) << v;
+  return s.str();
+}
+
+std::string percent(double rel) {
+  std::ostringstream s;
+  s << std::showpos << std::fixed << std::setprecision(1) << 100 * rel << " %";
+  return s.str();
+}
+
+} // namespace zc

@@ -1,0 +1,271 @@
+// The reproduction machinery: NNLS, cost groups and the calibrated tables, paper-figure matching,
+// sweeps (expansion, invalid points, failures that do not sink the others), regression diffs, and
+// that the committed results/ are current for a subset of points.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "machine/machine.hpp"
+#include "repro/nnls.hpp"
+#include "repro/paper_figures.hpp"
+#include "repro/regress.hpp"
+#include "repro/reproduce.hpp"
+#include "repro/sweep.hpp"
+#include "sim/batch.hpp"
+#include "util/error.hpp"
+
+using namespace zc;
+
+namespace {
+
+const std::string kRoot = ZCUBE_SOURCE_DIR;
+
+// Rows of a committed CSV file as maps.
+std::vector<std::map<std::string, std::string>> read_csv(const std::string& path) {
+  std::ifstream f(path);
+  std::vector<std::map<std::string, std::string>> rows;
+  std::string line;
+  std::vector<std::string> header;
+  while (std::getline(f, line)) {
+    std::vector<std::string> cells;
+    std::stringstream ss(line);
+    for (std::string c; std::getline(ss, c, ',');)
+      cells.push_back(c);
+    if (line.ends_with(",")) cells.push_back("");
+    if (header.empty()) {
+      header = cells;
+      continue;
+    }
+    std::map<std::string, std::string> row;
+    for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i)
+      row[header[i]] = cells[i];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+} // namespace
+
+TEST(Nnls, EqualsLeastSquaresWhenThatIsNonNegative) {
+  // Exact system: x = (1, 2).
+  const Matrix A = {{1, 0}, {0, 1}, {1, 1}};
+  const auto x = nnls(A, {1, 2, 3});
+  EXPECT_NEAR(x[0], 1, 1e-12);
+  EXPECT_NEAR(x[1], 2, 1e-12);
+}
+
+TEST(Nnls, ClampsANegativeComponentAndMeetsTheKuhnTuckerConditions) {
+  // Unconstrained least squares gives x1 < 0; NNLS must give x1 = 0, x0 = argmin over x0 alone.
+  const Matrix A = {{1, 1}, {1, 2}, {1, 3}};
+  const std::vector<double> b = {3, 2, 1};
+  const auto x = nnls(A, b);
+  EXPECT_EQ(x[1], 0);
+  EXPECT_NEAR(x[0], 2, 1e-12); // mean of b
+  // Gradient A^T (b - A x) <= 0 on the clamped component.
+  double g1 = 0;
+  for (int r = 0; r < 3; ++r)
+    g1 += A[r][1] * (b[r] - A[r][0] * x[0]);
+  EXPECT_LE(g1, 1e-12);
+  EXPECT_THROW(nnls({{1, 2}, {3}}, {1, 2}), std::invalid_argument);
+}
+
+TEST(CostGroups, EveryCounterFieldIsInExactlyOneGroup) {
+  CostTable t;
+  std::multiset<std::string> seen;
+  for (const auto& g : cost_groups())
+    for (const auto& f : g.fields)
+      seen.insert("cost_" + f);
+  for (auto& [id, v] : t.fields())
+    EXPECT_EQ(seen.count(id), 1u) << id;
+  EXPECT_EQ(seen.size(), t.fields().size());
+}
+
+TEST(CostGroups, ScalingMultipliesOnlyTheGroupsFields) {
+  const CostTable p = prior_i386_costs();
+  std::vector<double> k(cost_groups().size(), 1.0);
+  k[4] = 3.0; // merge
+  CostTable s = scale_groups(p, k);
+  EXPECT_DOUBLE_EQ(s.merge_ops, 3 * p.merge_ops);
+  EXPECT_DOUBLE_EQ(s.spans, p.spans);
+  EXPECT_EQ(cost_groups()[4].name, "merge");
+}
+
+TEST(CalibratedTables, TheI860MachinesShareOneTableAtAClockRatioOfThe386s) {
+  const CostTable a = machine_spec("ipsc2").cost, b = machine_spec("ipsc860").cost,
+                  c = machine_spec("volvox").cost;
+  CostTable bb = b, cc = c, aa = a;
+  const auto fa = aa.fields(), fb = bb.fields(), fc = cc.fields();
+  double ratio = 0;
+  for (std::size_t i = 0; i < fa.size(); ++i) {
+    EXPECT_EQ(*fb[i].second, *fc[i].second) << fb[i].first;
+    EXPECT_GE(*fa[i].second, 0) << fa[i].first; // physical: no negative cost
+    if (*fb[i].second > 0) {
+      const double r = *fa[i].second / *fb[i].second;
+      if (ratio == 0) ratio = r;
+      EXPECT_NEAR(r, ratio, 1e-9 * ratio) << fa[i].first;
+    }
+  }
+  EXPECT_GT(ratio, 1); // an i860 is faster than an 80386
+  EXPECT_TRUE(machine_spec("ipsc2").cost_calibrated);
+}
+
+TEST(PaperFigures, AKurcRunGetsItsThreeTable2FiguresWithTheirErrors) {
+  nlohmann::json r = {
+      {"status", "ok"},
+      {"algorithm", "pair-rs"},
+      {"machine", "ipsc2"},
+      {"topology", "cube"},
+      {"nodes", 16},
+      {"virtual_time_s", 2.0},
+      {"scene", {{"path", "/x/scenes/kurc/1pot.json"}, {"width", 400}, {"height", 400}}},
+      {"phases",
+       {{{"name", "span_list_creation"}, {"max_s", 0.322}},
+        {{"name", "local_zbuffer"}, {"max_s", 0.868}},
+        {{"name", "pixel_merging"}, {"max_s", 0.174}}}}};
+  const auto f = paper_figures_for(r);
+  ASSERT_EQ(f.size(), 3u);
+  EXPECT_NEAR(f[0]["rel_error"].get<double>(), 0.0, 1e-12);
+  EXPECT_NEAR(f[1]["rel_error"].get<double>(), 1.0, 1e-12);  // 868 against 434
+  EXPECT_NEAR(f[2]["rel_error"].get<double>(), -0.5, 1e-12); // 174 against 348
+  r["nodes"] = 8;                                            // held out: no figure
+  EXPECT_TRUE(paper_figures_for(r).empty());
+  r["nodes"] = 16;
+  r["scene"]["width"] = 640;
+  EXPECT_TRUE(paper_figures_for(r).empty());
+}
+
+TEST(PaperFigures, CharlesSpeedupNeedsTheSequentialTime) {
+  nlohmann::json r = {{"status", "ok"},
+                      {"algorithm", "elastic"},
+                      {"machine", "ipsc860"},
+                      {"topology", "cube"},
+                      {"nodes", 16},
+                      {"virtual_time_s", 1.0},
+                      {"phases", nlohmann::json::array()},
+                      {"scene", {{"path", "scenes/teapot.json"}, {"width", 512}, {"height", 512}}}};
+  EXPECT_TRUE(needs_sequential_time(r));
+  auto f = paper_figures_for(r);
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_FALSE(f[0].contains("predicted"));
+  f = paper_figures_for(r, 8.3 * 1.1);
+  EXPECT_NEAR(f[0]["rel_error"].get<double>(), 0.1, 1e-12);
+  r["topology"] = "ring";
+  EXPECT_FALSE(needs_sequential_time(r));
+}
+
+TEST(Sweep, ExpandsTheCartesianProductFirstAxisSlowest) {
+  const auto pts = expand_sweep({{"nodes", {"1", "2", "3"}}, {"latency", {"10us", "1ms"}}},
+                                kRoot + "/scenes/teapot.json");
+  ASSERT_EQ(pts.size(), 6u);
+  EXPECT_EQ(pts[0].values.at("nodes"), "1");
+  EXPECT_EQ(pts[1].values.at("latency"), "1ms");
+  EXPECT_EQ(pts[2].values.at("nodes"), "2");
+  // 3 nodes is no hypercube: those points carry the reason, the others a configuration.
+  for (const auto& p : pts) {
+    EXPECT_EQ(p.config.has_value(), p.values.at("nodes") != "3");
+    if (!p.config) {
+      EXPECT_NE(p.error.find("power of two"), std::string::npos);
+    }
+  }
+  EXPECT_DOUBLE_EQ(*pts[1].config->overrides.latency_s, 1e-3);
+  EXPECT_THROW(split_list("1,,2", "nodes"), UsageError);
+  EXPECT_THROW(split_list("", "nodes"), UsageError);
+  const auto bad = expand_sweep({{"algorithm", {"elastic"}}, {"packet", {"10"}}}, "x.json");
+  EXPECT_FALSE(bad[0].config.has_value()); // --packet does not apply to elastic
+}
+
+TEST(Batch, AFailingPointDoesNotLoseTheOthers) {
+  SimConfig good;
+  good.machine = "ipsc2";
+  good.nodes = 2;
+  good.algorithm = "elastic";
+  good.scene_path = kRoot + "/scenes/teapot.json";
+  good.width = good.height = 64;
+  SimConfig missing = good;
+  missing.scene_path = kRoot + "/no/such/scene.json";
+  int calls = 0;
+  const auto r = run_batch({missing, good, missing}, 2, [&](const BatchProgress&) { ++calls; });
+  ASSERT_EQ(r.size(), 3u);
+  EXPECT_EQ(r[0]["status"], "error");
+  EXPECT_NE(r[0]["error"].get<std::string>().find("scene.json"), std::string::npos);
+  EXPECT_EQ(r[1]["status"], "ok");
+  EXPECT_EQ(r[1]["image"]["identical_to_sequential"], true);
+  EXPECT_EQ(r[2]["status"], "error");
+  EXPECT_EQ(calls, 3);
+}
+
+TEST(Regress, ReportsEveryChangedQuantityAndMissingRuns) {
+  std::map<std::string, nlohmann::json> a = {
+      {"x", {{"virtual_time_s", 2.0}, {"image", {{"sha256", "ab"}}}}},
+      {"y", {{"virtual_time_s", 1.0}}}};
+  EXPECT_TRUE(compare_reduced(a, a).empty());
+  auto b = a;
+  b["x"]["virtual_time_s"] = 2.0000000000000004; // one ulp is a change
+  b["x"]["image"]["sha256"] = "cd";
+  b.erase("y");
+  b["z"] = nlohmann::json::object();
+  const auto d = compare_reduced(a, b);
+  ASSERT_EQ(d.size(), 4u);
+  std::set<std::string> what;
+  for (const auto& e : d)
+    what.insert(e.run + ":" + e.quantity);
+  EXPECT_TRUE(what.count("x:virtual_time_s"));
+  EXPECT_TRUE(what.count("x:image.sha256"));
+  EXPECT_TRUE(what.count("y:(run)"));
+  EXPECT_TRUE(what.count("z:(run)"));
+}
+
+// The committed results/ are a real run of `zcube reproduce`: a few points re-simulated now give
+// the committed numbers (to their printed precision).
+TEST(Reproduce, CommittedResultsAreCurrentForASubset) {
+  ReproduceOptions o;
+  o.root = kRoot;
+  const auto kurc = kurc_plan(o), charles = charles_plan(o), blazek = blazek_plan(o);
+  auto pick = [](const PaperPlan& p, const std::string& key) {
+    for (const auto& pt : p.points)
+      if (pt.key == key) return pt.cfg;
+    ADD_FAILURE() << "no point " << key;
+    return SimConfig{};
+  };
+  const std::vector<SimConfig> cfgs = {
+      pick(kurc, "t2/16/1pot/pair-rs"), pick(charles, "el/teapot/256/cube/4"),
+      pick(charles, "seq/teapot/256"), pick(blazek, "node-initiated/4/4")};
+  const auto r = run_batch(cfgs, 2);
+  for (const auto& rep : r)
+    ASSERT_EQ(rep["status"], "ok") << rep.dump();
+  // Equal to the committed figure within its printed precision.
+  auto near = [](const std::string& committed, double now, double rel, double abs,
+                 const std::string& what) {
+    EXPECT_LE(std::fabs(std::stod(committed) - now), std::max(abs, rel * std::fabs(now)))
+        << what << ": committed " << committed << ", now " << now;
+  };
+  int found = 0;
+  for (const auto& row : read_csv(kRoot + "/results/kurc/table2.csv"))
+    if (row.at("nodes") == "16" && row.at("scene") == "1pot" && row.at("scheme") == "pair-rs")
+      for (const auto& p : r[0]["phases"])
+        if (p["name"] == row.at("phase")) {
+          near(row.at("predicted_ms"), p["max_s"].get<double>() * 1e3, 0, 0.0501,
+               "kurc " + row.at("phase"));
+          ++found;
+        }
+  for (const auto& row : read_csv(kRoot + "/results/charles/speedup.csv"))
+    if (row.at("scene") == "teapot" && row.at("size") == "256" && row.at("topology") == "cube" &&
+        row.at("nodes") == "4") {
+      near(row.at("virtual_s"), r[1]["virtual_time_s"].get<double>(), 6e-6, 0, "charles virtual_s");
+      near(row.at("speedup"),
+           r[2]["virtual_time_s"].get<double>() / r[1]["virtual_time_s"].get<double>(), 6e-4, 0,
+           "charles speedup");
+      ++found;
+    }
+  for (const auto& row : read_csv(kRoot + "/results/blazek/speedup.csv"))
+    if (row.at("method") == "node-initiated" && row.at("spheres") == "4" &&
+        row.at("nodes") == "4") {
+      near(row.at("virtual_s"), r[3]["virtual_time_s"].get<double>(), 6e-6, 0, "blazek virtual_s");
+      ++found;
+    }
+  EXPECT_EQ(found, 5);
+}
