@@ -10,7 +10,7 @@
 #include "raster/image_io.hpp"
 #include "repro/paper_figures.hpp"
 #include "scene/load.hpp"
-#include "util/image_size.hpp"
+#include "sim/run_flags.hpp"
 
 namespace zc::cli {
 
@@ -63,21 +63,15 @@ static int cmd_run(std::vector<std::string> args) {
       std::cout << a.name << "  " << a.summary << "\n";
     return 0;
   }
-  SimConfig cfg;
-  sf.apply(cfg);
-  cfg.algorithm = algorithm;
-  cfg.scene_path = scene;
-  cfg.options.frames = frames;
-  if (!vertices.empty()) cfg.options.values["vertices"] = vertices;
-  if (!output.empty()) cfg.options.values["output"] = output;
-  if (!packet.empty()) cfg.options.values["packet"] = packet;
-  if (!lines.empty()) cfg.options.values["lines"] = lines;
-  if (!forward.empty()) cfg.options.values["forward"] = forward;
-  if (!size.empty()) {
-    const ImageSize s = parse_image_size(size);
-    cfg.width = s.width;
-    cfg.height = s.height;
-  }
+  auto flags = sf.flags();
+  flags["algorithm"] = algorithm;
+  flags["frames"] = std::to_string(frames);
+  const std::pair<const char*, const std::string*> text[] = {
+      {"size", &size},     {"vertices", &vertices}, {"output", &output},
+      {"packet", &packet}, {"lines", &lines},       {"forward", &forward}};
+  for (const auto& [k, v] : text)
+    if (!v->empty()) flags[k] = *v;
+  const SimConfig cfg = config_from_flags(flags, scene);
   // A speed-up figure of a paper needs the sequential time on the same machine: one more
   // simulation, in its own process and before this one (a forked child must not inherit a
   // SimGrid engine).

@@ -32,7 +32,7 @@ static int cmd_sweep(std::vector<std::string> args) {
                "(e.g. --nodes 1,2,4,8 --latency 10us,275us --algorithm pair-rs,aapc-hbp)",
                "zcube sweep"};
   std::map<std::string, std::string> given;
-  for (const auto& f : sweep_flags())
+  for (const auto& f : run_flag_names())
     app.add_option("--" + f, given[f], "comma-separated values of zcube run --" + f);
   std::string out = "sweep", plot_x, plot_y = "virtual_s";
   int jobs = default_jobs();
@@ -49,7 +49,7 @@ static int cmd_sweep(std::vector<std::string> args) {
   if (int rc = parse(app, args); rc >= 0) return rc;
 
   std::vector<SweepAxis> axes;
-  for (const auto& f : sweep_flags())
+  for (const auto& f : run_flag_names())
     if (!given[f].empty()) axes.push_back({f, split_list(given[f], f)});
   if (axes.empty()) throw UsageError("sweep: give at least one flag, e.g. --nodes 1,2,4,8");
   if (plot_x.empty())

@@ -1,7 +1,6 @@
 #include "cli/sim_options.hpp"
 
-#include "machine/units.hpp"
-#include "util/error.hpp"
+#include "sim/run_flags.hpp"
 
 namespace zc::cli {
 
@@ -22,29 +21,27 @@ void SimFlags::add_to(CLI::App& app) {
   app.add_option("--cost-scale", cost_scale, "multiply every cost, CPU and network");
 }
 
-static double positive_number(const std::string& s, const std::string& flag) {
-  char* end = nullptr;
-  const double v = std::strtod(s.c_str(), &end);
-  if (end == s.c_str() || *end || !(v > 0) || v == HUGE_VAL)
-    throw UsageError(flag + " '" + s + "': expected a positive number");
-  return v;
+std::map<std::string, std::string> SimFlags::flags() const {
+  std::map<std::string, std::string> m = {
+      {"machine", machine}, {"topology", topology}, {"fidelity", fidelity}};
+  // A platform .xml states its own node count unless --nodes is given.
+  if (!machine.ends_with(".xml") || (nodes_option && nodes_option->count() > 0))
+    m["nodes"] = std::to_string(nodes);
+  const std::pair<const char*, const std::string*> text[] = {
+      {"latency", &latency},     {"bandwidth", &bandwidth}, {"per-hop", &per_hop},
+      {"cpu-scale", &cpu_scale}, {"memory", &memory},       {"cost-scale", &cost_scale}};
+  for (const auto& [k, v] : text)
+    if (!v->empty()) m[k] = *v;
+  return m;
 }
 
 void SimFlags::apply(SimConfig& cfg) const {
-  cfg.machine = machine;
-  cfg.nodes = nodes;
-  cfg.topology = parse_topology(topology);
-  cfg.fidelity = parse_fidelity(fidelity);
-  if (!machine.ends_with(".xml"))
-    check_node_count(cfg.topology, nodes);
-  else if (nodes_option && nodes_option->count() == 0)
-    cfg.nodes = 0; // take the file's node count (zcube.nodes)
-  if (!latency.empty()) cfg.overrides.latency_s = parse_time(latency, "--latency");
-  if (!bandwidth.empty()) cfg.overrides.bandwidth_Bps = parse_bandwidth(bandwidth, "--bandwidth");
-  if (!per_hop.empty()) cfg.overrides.per_hop_s = parse_time(per_hop, "--per-hop");
-  if (!cpu_scale.empty()) cfg.overrides.cpu_scale = positive_number(cpu_scale, "--cpu-scale");
-  if (!memory.empty()) cfg.overrides.memory_bytes = parse_bytes(memory, "--memory");
-  if (!cost_scale.empty()) cfg.overrides.cost_scale = positive_number(cost_scale, "--cost-scale");
+  const SimConfig c = config_from_flags(flags(), cfg.scene_path);
+  cfg.machine = c.machine;
+  cfg.nodes = c.nodes;
+  cfg.topology = c.topology;
+  cfg.fidelity = c.fidelity;
+  cfg.overrides = c.overrides;
 }
 
 } // namespace zc::cli

@@ -30,7 +30,7 @@ std::vector<RegressRun> read_regress_runs(const std::string& path) {
     RegressRun run{r["name"], {}};
     for (const auto& [k, v] : r.items()) {
       if (k == "name") continue;
-      const auto& fl = sweep_flags();
+      const auto& fl = run_flag_names();
       if (std::find(fl.begin(), fl.end(), k) == fl.end() || !v.is_string())
         throw InputError(
             path, 0, "run " + run.name + ": '" + k + "' is not a zcube run flag given as a string");
@@ -76,7 +76,7 @@ std::map<std::string, nlohmann::json> run_regress(const std::vector<RegressRun>&
     if (flags.count("scene") && !std::filesystem::path(flags["scene"]).is_absolute())
       flags["scene"] = root + "/" + flags["scene"];
     try {
-      cfgs.push_back(sweep_config(flags, root + "/scenes/teapot.json"));
+      cfgs.push_back(config_from_flags(flags, root + "/scenes/teapot.json"));
       idx.push_back(i);
     } catch (const std::exception& ex) {
       bad[i] = ex.what();

@@ -13,7 +13,7 @@ namespace zc {
 
 struct RegressRun {
   std::string name;
-  std::map<std::string, std::string> flags; // zcube run flags (repro/sweep.hpp sweep_flags)
+  std::map<std::string, std::string> flags; // zcube run flags (sim/run_flags.hpp)
 };
 
 // Reads a runs file ({"runs": [{"name": ..., flag: value, ...}]}); InputError on a bad file.

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/run_flags.hpp"
 #include "sim/simulation.hpp"
 
 namespace zc {
@@ -17,9 +18,6 @@ struct SweepAxis {
   std::string flag;                // without dashes: "nodes", "latency", ...
   std::vector<std::string> values; // one or more
 };
-
-// The flags a sweep accepts, in the order their columns appear.
-const std::vector<std::string>& sweep_flags();
 
 // Splits "1,2,4" (empty items are an error naming the flag).
 std::vector<std::string> split_list(const std::string& text, const std::string& flag);
@@ -32,9 +30,6 @@ struct SweepPoint {
 
 // Every combination, the first axis varying slowest. `scene` is the default scene path.
 std::vector<SweepPoint> expand_sweep(const std::vector<SweepAxis>& axes, const std::string& scene);
-
-// The configuration of one point (UsageError/InputError on a bad value).
-SimConfig sweep_config(const std::map<std::string, std::string>& values, const std::string& scene);
 
 // One row per point: the axis values, then status, error, virtual_s, wall_s, messages, bytes,
 // concurrent_volume_bytes, load_imbalance, image_sha256, identical, and one "phase:<name>" column

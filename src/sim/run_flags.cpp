@@ -1,0 +1,83 @@
+#include "sim/run_flags.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "machine/units.hpp"
+#include "util/error.hpp"
+#include "util/image_size.hpp"
+
+namespace zc {
+
+const std::vector<std::string>& run_flag_names() {
+  static const std::vector<std::string> f = {
+      "machine",  "nodes",   "topology",  "fidelity", "algorithm", "scene",  "size",
+      "frames",   "latency", "bandwidth", "per-hop",  "cpu-scale", "memory", "cost-scale",
+      "vertices", "output",  "packet",    "lines",    "forward"};
+  return f;
+}
+
+namespace {
+
+int parse_int(const std::string& s, const std::string& flag) {
+  std::size_t used = 0;
+  int v = 0;
+  try {
+    v = std::stoi(s, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != s.size() || s.empty())
+    throw UsageError("--" + flag + " '" + s + "': expected an integer");
+  return v;
+}
+
+double parse_positive(const std::string& s, const std::string& flag) {
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  if (end == s.c_str() || *end || !(v > 0) || !std::isfinite(v))
+    throw UsageError("--" + flag + " '" + s + "': expected a positive number");
+  return v;
+}
+
+} // namespace
+
+SimConfig config_from_flags(const std::map<std::string, std::string>& v, const std::string& scene) {
+  auto get = [&](const char* k, const char* def) {
+    auto it = v.find(k);
+    return it == v.end() ? std::string(def) : it->second;
+  };
+  SimConfig c;
+  c.machine = get("machine", "ipsc2");
+  c.topology = parse_topology(get("topology", "cube"));
+  c.fidelity = parse_fidelity(get("fidelity", "circuit"));
+  const bool xml = c.machine.ends_with(".xml");
+  c.nodes = v.count("nodes") ? parse_int(v.at("nodes"), "nodes") : (xml ? 0 : 1);
+  if (!xml) check_node_count(c.topology, c.nodes);
+  c.algorithm = get("algorithm", "sequential");
+  c.scene_path = get("scene", scene.c_str());
+  if (v.count("size")) {
+    const ImageSize s = parse_image_size(v.at("size"));
+    c.width = s.width;
+    c.height = s.height;
+  }
+  c.options.frames = v.count("frames") ? parse_int(v.at("frames"), "frames") : 1;
+  if (v.count("latency")) c.overrides.latency_s = parse_time(v.at("latency"), "--latency");
+  if (v.count("bandwidth"))
+    c.overrides.bandwidth_Bps = parse_bandwidth(v.at("bandwidth"), "--bandwidth");
+  if (v.count("per-hop")) c.overrides.per_hop_s = parse_time(v.at("per-hop"), "--per-hop");
+  if (v.count("cpu-scale")) c.overrides.cpu_scale = parse_positive(v.at("cpu-scale"), "cpu-scale");
+  if (v.count("memory")) c.overrides.memory_bytes = parse_bytes(v.at("memory"), "--memory");
+  if (v.count("cost-scale"))
+    c.overrides.cost_scale = parse_positive(v.at("cost-scale"), "cost-scale");
+  for (const char* k : {"vertices", "output", "packet", "lines", "forward"})
+    if (v.count(k)) c.options.values[k] = v.at(k);
+  // The algorithm and its options are checked here, so a bad combination fails only its point.
+  const Algorithm& a = find_algorithm(c.algorithm);
+  for (const auto& [k, val] : c.options.values)
+    if (std::find(a.option_keys.begin(), a.option_keys.end(), k) == a.option_keys.end())
+      throw UsageError("--" + k + " does not apply to algorithm " + a.name);
+  return c;
+}
+
+} // namespace zc
