@@ -26,4 +26,12 @@ void to_json(nlohmann::json& j, const Counters& c) {
 #undef ZC_JSON
 }
 
+void from_json(const nlohmann::json& j, Counters& c) {
+  c = Counters{};
+#define ZC_FROM_JSON(f)                                                                            \
+  if (j.contains(#f)) c.f = j.at(#f).get<std::uint64_t>();
+  ZC_COUNTER_FIELDS(ZC_FROM_JSON)
+#undef ZC_FROM_JSON
+}
+
 } // namespace zc

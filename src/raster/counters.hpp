@@ -10,22 +10,22 @@
 namespace zc {
 
 struct Counters {
-  std::uint64_t vertices_transformed = 0; // model-view-projection + Gouraud lighting of one vertex
-  std::uint64_t triangles_in = 0;         // triangles submitted to set-up
-  std::uint64_t triangles_culled = 0;     // back-facing (when culling), off-screen or zero-area
-  std::uint64_t triangles_clipped = 0;    // triangles that crossed a clip plane
-  std::uint64_t triangles_setup = 0;      // screen triangles set up (after clipping)
-  std::uint64_t spans = 0;                // non-empty (row, triangle) spans rasterised
-  std::uint64_t pixels_generated = 0;     // fragments produced (TPG of Kurc et al.)
-  std::uint64_t pixels_tested = 0;        // depth comparisons against a stored pixel
-  std::uint64_t pixels_written = 0;       // fragments that won their depth test
-  std::uint64_t pixels_final = 0;         // covered pixels of the final image (TPF)
-  std::uint64_t texels_fetched = 0;       // texture samples (0 for an untextured scene)
-  std::uint64_t pixels_cleared = 0;       // frame/z-buffer locations initialised
-  std::uint64_t merge_ops = 0;            // pixel comparisons while merging partial images
-  std::uint64_t bytes_packed = 0;         // bytes copied into or out of message buffers
-  std::uint64_t triangles_estimated = 0;  // per-triangle load estimates (Charles et al. §5)
-  std::uint64_t rows_scanned = 0;         // per-row passes: prefix scans, partitions, row counts
+  std::uint64_t vertices_transformed = 0;  // model-view-projection + Gouraud lighting of one vertex
+  std::uint64_t triangles_in = 0;          // triangles submitted to set-up
+  std::uint64_t triangles_culled = 0;      // back-facing (when culling), off-screen or zero-area
+  std::uint64_t triangles_clipped = 0;     // triangles that crossed a clip plane
+  std::uint64_t triangles_setup = 0;       // screen triangles set up (after clipping)
+  std::uint64_t spans = 0;                 // non-empty (row, triangle) spans rasterised
+  std::uint64_t pixels_generated = 0;      // fragments produced (TPG of Kurc et al.)
+  std::uint64_t pixels_tested = 0;         // depth comparisons against a stored pixel
+  std::uint64_t pixels_written = 0;        // fragments that won their depth test
+  std::uint64_t pixels_final = 0;          // covered pixels of the final image (TPF)
+  std::uint64_t texels_fetched = 0;        // texture samples (0 for an untextured scene)
+  std::uint64_t pixels_cleared = 0;        // frame/z-buffer locations initialised
+  std::uint64_t merge_ops = 0;             // pixel comparisons while merging partial images
+  std::uint64_t bytes_packed = 0;          // bytes copied into or out of message buffers
+  std::uint64_t triangles_estimated = 0;   // per-triangle load estimates (Charles et al. §5)
+  std::uint64_t rows_scanned = 0;          // per-row passes: prefix scans, partitions, row counts
   std::uint64_t triangles_tessellated = 0; // polygons made from primitive descriptions (Blazek)
 
   Counters& operator+=(const Counters& o);
@@ -35,6 +35,7 @@ struct Counters {
 };
 
 void to_json(nlohmann::json& j, const Counters& c);
+void from_json(const nlohmann::json& j, Counters& c); // absent fields are 0
 
 // Every counter field, for code that must treat them uniformly (cost tables, reports):
 // ZC_COUNTER_FIELDS(X) expands X(name) once per field, in declaration order.

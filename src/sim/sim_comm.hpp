@@ -10,15 +10,10 @@
 #include <simgrid/s4u.hpp>
 
 #include "comm/comm.hpp"
+#include "sim/report.hpp"
 #include "sim/sim_network.hpp"
 
 namespace zc {
-
-struct NodeStats {
-  double busy_s = 0, comm_s = 0, finish_s = 0;
-  std::uint64_t bytes_sent = 0, messages = 0;
-  double memory = 0, peak_memory = 0;
-};
 
 class SimComm final : public Comm {
 public:

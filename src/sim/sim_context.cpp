@@ -44,6 +44,18 @@ void SimContext::deliver_image(int frame, Framebuffer image) {
   images_.push_back({frame, std::move(image)});
 }
 
+NodeRecord SimContext::record(nlohmann::json rank) const {
+  NodeRecord r;
+  r.rank = std::move(rank);
+  r.stats = stats_;
+  r.phase_order = phase_order_;
+  r.phase_totals = phase_totals_;
+  r.phase_work = phase_work_;
+  r.work = work_;
+  r.metrics = metrics_;
+  return r;
+}
+
 void SimContext::deliver_rows(int frame, Framebuffer rows) {
   images_.push_back({frame, std::move(rows), true});
 }

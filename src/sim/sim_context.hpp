@@ -11,12 +11,6 @@
 
 namespace zc {
 
-struct FrameImage {
-  int frame;
-  Framebuffer image;
-  bool partial = false; // rows of the frame (deliver_rows), pasted together after the run
-};
-
 class SimContext final : public NodeContext {
 public:
   SimContext(SimComm& comm, NodeStats& stats, const Scene& scene, const AlgorithmOptions& opt,
@@ -37,6 +31,8 @@ public:
   nlohmann::json& metrics() override { return metrics_; }
 
   const Counters& work() const { return work_; }
+  // What this node recorded, for the report.
+  NodeRecord record(nlohmann::json rank) const;
   const std::map<std::string, double>& phase_totals() const { return phase_totals_; }
   const std::vector<std::string>& phase_order() const { return phase_order_; }
   // Operations charged inside each phase (the innermost open one; "" outside every phase): with the

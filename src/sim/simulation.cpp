@@ -21,6 +21,7 @@
 #include "repro/paper_figures.hpp"
 #include "scene/load.hpp"
 #include "sim/batch.hpp"
+#include "sim/report.hpp"
 #include "sim/sim_context.hpp"
 #include "util/error.hpp"
 
@@ -257,83 +258,12 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   if (!res.ok) j["error"] = failure;
   j["virtual_time_s"] = vtime;
 
-  // Phases: per node totals, then max/mean/min over the nodes that entered the phase.
-  std::vector<std::string> order;
-  for (const auto& c : ctxs)
-    for (const auto& n : c->phase_order())
-      if (std::find(order.begin(), order.end(), n) == order.end()) order.push_back(n);
-  j["phases"] = nlohmann::json::array();
-  for (const auto& n : order) {
-    double mx = 0, sum = 0, mn = 1e300;
-    int cnt = 0;
-    for (const auto& c : ctxs) {
-      auto it = c->phase_totals().find(n);
-      if (it == c->phase_totals().end()) continue;
-      mx = std::max(mx, it->second);
-      mn = std::min(mn, it->second);
-      sum += it->second;
-      ++cnt;
-    }
-    j["phases"].push_back({{"name", n}, {"max_s", mx}, {"mean_s", sum / cnt}, {"min_s", mn}});
-  }
-  Counters total;
-  std::uint64_t msgs = 0, bytes = 0;
-  j["per_node"] = nlohmann::json::array();
+  std::vector<NodeRecord> records;
   for (int r = 0; r <= P; ++r) {
     if (r == P && !algo.uses_host) break;
-    const NodeStats& s = stats[r];
-    total += ctxs[r]->work();
-    msgs += s.messages;
-    bytes += s.bytes_sent;
-    nlohmann::json ph = nlohmann::json::object();
-    for (const auto& [n, t] : ctxs[r]->phase_totals())
-      ph[n] = t;
-    // Operations per phase, zero counts left out (the calibration's linear model).
-    nlohmann::json pw = nlohmann::json::object();
-    for (const auto& [n, w] : ctxs[r]->phase_work()) {
-      nlohmann::json cj = w, nz = nlohmann::json::object();
-      for (auto& [k, v] : cj.items())
-        if (v.get<std::uint64_t>() != 0) nz[k] = v;
-      if (!nz.empty()) pw[n.empty() ? "(no phase)" : n] = nz;
-    }
-    j["per_node"].push_back({{"rank", r == P ? nlohmann::json("srm") : nlohmann::json(r)},
-                             {"busy_s", s.busy_s},
-                             {"comm_s", s.comm_s},
-                             {"idle_s", std::max(0.0, vtime - s.busy_s - s.comm_s)},
-                             {"bytes_sent", s.bytes_sent},
-                             {"messages", s.messages},
-                             {"peak_memory_bytes", s.peak_memory},
-                             {"phases", ph},
-                             {"phase_work", pw}});
-    if (!ctxs[r]->metrics().empty()) j["per_node"].back()["metrics"] = ctxs[r]->metrics();
+    records.push_back(ctxs[r]->record(r == P ? nlohmann::json("srm") : nlohmann::json(r)));
   }
-  // Defaults of the DESIGN §4 keys an algorithm may refine through its metrics (Kurc et al.
-  // replace both by their own definitions: the sum over communication steps of the largest
-  // volume of a step, and the imbalance of the merge loads).
-  //  concurrent_volume_bytes: the largest volume one node sent (a lower bound of the time-critical
-  //    volume when the algorithm does not report its steps);
-  //  load_imbalance: (max - min) / mean of the nodes' busy (CPU) time, the definition the
-  //    algorithms use for their own loads; 0 when nobody worked.
-  std::uint64_t max_sent = 0;
-  double busy_max = 0, busy_min = P > 0 ? stats[0].busy_s : 0.0, busy_sum = 0;
-  for (int r = 0; r < P; ++r) {
-    max_sent = std::max(max_sent, stats[r].bytes_sent);
-    busy_max = std::max(busy_max, stats[r].busy_s);
-    busy_min = std::min(busy_min, stats[r].busy_s);
-    busy_sum += stats[r].busy_s;
-  }
-  const double busy_mean = P > 0 ? busy_sum / P : 0.0;
-  j["communication"] = {
-      {"messages", msgs}, {"bytes", bytes}, {"concurrent_volume_bytes", max_sent}};
-  j["counters"] = total;
-  j["load_imbalance"] = busy_mean > 0 ? (busy_max - busy_min) / busy_mean : 0.0;
-  // Algorithm metrics (node 0's) merge into the top level, objects key by key.
-  for (auto& [k, v] : ctxs[0]->metrics().items()) {
-    if (v.is_object() && j.contains(k) && j[k].is_object())
-      j[k].update(v);
-    else
-      j[k] = v;
-  }
+  add_node_sections(j, records, P, vtime);
   j["model"] = {
       {"startup_short_s", pm.net.startup_short_s},
       {"startup_long_s", pm.net.startup_long_s},
@@ -343,50 +273,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
       {"switching", pm.net.switching == Switching::Circuit ? "circuit" : "store-and-forward"},
       {"node_memory_bytes", pm.memory.empty() ? 0.0 : pm.memory[0]}};
 
-  // Rows delivered straight to the output device: pasted into one picture per frame.
-  {
-    std::map<int, Framebuffer> composed;
-    std::vector<FrameImage> whole;
-    for (auto& fi : images) {
-      if (!fi.partial) {
-        whole.push_back(std::move(fi));
-        continue;
-      }
-      auto it = composed.find(fi.frame);
-      if (it == composed.end())
-        it = composed
-                 .emplace(fi.frame,
-                          Framebuffer(scene.width, RowSet::all(scene.height), scene.background))
-                 .first;
-      it->second.paste(fi.image);
-    }
-    for (auto& [f, fb] : composed)
-      whole.push_back({f, std::move(fb)});
-    images = std::move(whole);
-  }
-  // Images, in frame order, against the host's sequential renderer.
-  std::sort(images.begin(), images.end(),
-            [](const FrameImage& a, const FrameImage& b) { return a.frame < b.frame; });
-  nlohmann::json img = nlohmann::json::object();
-  if (res.ok) {
-    bool identical = int(images.size()) == cfg.options.frames;
-    std::vector<std::string> shas;
-    for (int f = 0; f < int(images.size()); ++f) {
-      shas.push_back(image_sha256(images[f].image));
-      if (cfg.compare_with_sequential) {
-        Scene sf = scene;
-        sf.camera = camera_at_frame(scene.camera, f, cfg.options.frames);
-        identical = identical && image_sha256(render_scene(sf, 1).image) == shas.back();
-      }
-    }
-    img["sha256"] = shas.empty() ? nlohmann::json(nullptr) : nlohmann::json(shas.back());
-    if (shas.size() > 1) img["frames_sha256"] = shas;
-    img["identical_to_sequential"] =
-        cfg.compare_with_sequential ? nlohmann::json(identical) : nlohmann::json(nullptr);
-  }
-  j["image"] = img;
-  for (auto& fi : images)
-    res.images.push_back(std::move(fi.image));
+  add_image_section(j, images, scene, cfg, res.ok, res.images);
   // The seeds' figures this run corresponds to, with the relative error (repro/paper_figures).
   if (auto paper = paper_figures_for(j); !paper.empty()) j["paper"] = paper;
   j["host"] = {{"wall_time_s",

@@ -1,0 +1,175 @@
+#include "sim/report.hpp"
+
+#include <algorithm>
+
+#include "geometry/camera_path.hpp"
+#include "raster/image_io.hpp"
+#include "raster/renderer.hpp"
+
+namespace zc {
+
+void to_json(nlohmann::json& j, const NodeRecord& r) {
+  nlohmann::json work = nlohmann::json::object();
+  for (const auto& [n, w] : r.phase_work)
+    work[n] = w;
+  j = {{"rank", r.rank},
+       {"busy_s", r.stats.busy_s},
+       {"comm_s", r.stats.comm_s},
+       {"finish_s", r.stats.finish_s},
+       {"bytes_sent", r.stats.bytes_sent},
+       {"messages", r.stats.messages},
+       {"peak_memory", r.stats.peak_memory},
+       {"phase_order", r.phase_order},
+       {"phase_totals", r.phase_totals},
+       {"phase_work", work},
+       {"work", r.work},
+       {"metrics", r.metrics}};
+}
+
+void from_json(const nlohmann::json& j, NodeRecord& r) {
+  r.rank = j.at("rank");
+  r.stats.busy_s = j.at("busy_s");
+  r.stats.comm_s = j.at("comm_s");
+  r.stats.finish_s = j.at("finish_s");
+  r.stats.bytes_sent = j.at("bytes_sent");
+  r.stats.messages = j.at("messages");
+  r.stats.peak_memory = j.at("peak_memory");
+  r.phase_order = j.at("phase_order").get<std::vector<std::string>>();
+  r.phase_totals = j.at("phase_totals").get<std::map<std::string, double>>();
+  r.phase_work.clear();
+  for (const auto& [n, w] : j.at("phase_work").items())
+    r.phase_work[n] = w.get<Counters>();
+  r.work = j.at("work").get<Counters>();
+  r.metrics = j.at("metrics");
+}
+
+void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, int P,
+                       double total_s) {
+  // Phases: per node totals, then max/mean/min over the nodes that entered the phase.
+  std::vector<std::string> order;
+  for (const auto& c : nodes)
+    for (const auto& n : c.phase_order)
+      if (std::find(order.begin(), order.end(), n) == order.end()) order.push_back(n);
+  j["phases"] = nlohmann::json::array();
+  for (const auto& n : order) {
+    double mx = 0, sum = 0, mn = 1e300;
+    int cnt = 0;
+    for (const auto& c : nodes) {
+      auto it = c.phase_totals.find(n);
+      if (it == c.phase_totals.end()) continue;
+      mx = std::max(mx, it->second);
+      mn = std::min(mn, it->second);
+      sum += it->second;
+      ++cnt;
+    }
+    j["phases"].push_back({{"name", n}, {"max_s", mx}, {"mean_s", sum / cnt}, {"min_s", mn}});
+  }
+  Counters total;
+  std::uint64_t msgs = 0, bytes = 0;
+  j["per_node"] = nlohmann::json::array();
+  for (const NodeRecord& rec : nodes) {
+    const NodeStats& s = rec.stats;
+    total += rec.work;
+    msgs += s.messages;
+    bytes += s.bytes_sent;
+    nlohmann::json ph = nlohmann::json::object();
+    for (const auto& [n, t] : rec.phase_totals)
+      ph[n] = t;
+    // Operations per phase, zero counts left out (the calibration's linear model).
+    nlohmann::json pw = nlohmann::json::object();
+    for (const auto& [n, w] : rec.phase_work) {
+      nlohmann::json cj = w, nz = nlohmann::json::object();
+      for (auto& [k, v] : cj.items())
+        if (v.get<std::uint64_t>() != 0) nz[k] = v;
+      if (!nz.empty()) pw[n.empty() ? "(no phase)" : n] = nz;
+    }
+    j["per_node"].push_back({{"rank", rec.rank},
+                             {"busy_s", s.busy_s},
+                             {"comm_s", s.comm_s},
+                             {"idle_s", std::max(0.0, total_s - s.busy_s - s.comm_s)},
+                             {"bytes_sent", s.bytes_sent},
+                             {"messages", s.messages},
+                             {"peak_memory_bytes", s.peak_memory},
+                             {"phases", ph},
+                             {"phase_work", pw}});
+    if (!rec.metrics.empty()) j["per_node"].back()["metrics"] = rec.metrics;
+  }
+  // Defaults of the DESIGN §4 keys an algorithm may refine through its metrics (Kurc et al.
+  // replace both by their own definitions: the sum over communication steps of the largest
+  // volume of a step, and the imbalance of the merge loads).
+  //  concurrent_volume_bytes: the largest volume one node sent (a lower bound of the time-critical
+  //    volume when the algorithm does not report its steps);
+  //  load_imbalance: (max - min) / mean of the nodes' busy (CPU) time, the definition the
+  //    algorithms use for their own loads; 0 when nobody worked.
+  std::uint64_t max_sent = 0;
+  double busy_max = 0, busy_min = P > 0 ? nodes[0].stats.busy_s : 0.0, busy_sum = 0;
+  for (int r = 0; r < P; ++r) {
+    const NodeStats& s = nodes[std::size_t(r)].stats;
+    max_sent = std::max(max_sent, s.bytes_sent);
+    busy_max = std::max(busy_max, s.busy_s);
+    busy_min = std::min(busy_min, s.busy_s);
+    busy_sum += s.busy_s;
+  }
+  const double busy_mean = P > 0 ? busy_sum / P : 0.0;
+  j["communication"] = {
+      {"messages", msgs}, {"bytes", bytes}, {"concurrent_volume_bytes", max_sent}};
+  j["counters"] = total;
+  j["load_imbalance"] = busy_mean > 0 ? (busy_max - busy_min) / busy_mean : 0.0;
+  // Algorithm metrics (node 0's) merge into the top level, objects key by key.
+  for (auto& [k, v] : nodes.front().metrics.items()) {
+    if (v.is_object() && j.contains(k) && j[k].is_object())
+      j[k].update(v);
+    else
+      j[k] = v;
+  }
+}
+
+void add_image_section(nlohmann::json& j, std::vector<FrameImage>& images, const Scene& scene,
+                       const SimConfig& cfg, bool ok, std::vector<Framebuffer>& out) {
+  // Rows delivered straight to the output device: pasted into one picture per frame.
+  {
+    std::map<int, Framebuffer> composed;
+    std::vector<FrameImage> whole;
+    for (auto& fi : images) {
+      if (!fi.partial) {
+        whole.push_back(std::move(fi));
+        continue;
+      }
+      auto it = composed.find(fi.frame);
+      if (it == composed.end())
+        it = composed
+                 .emplace(fi.frame,
+                          Framebuffer(scene.width, RowSet::all(scene.height), scene.background))
+                 .first;
+      it->second.paste(fi.image);
+    }
+    for (auto& [f, fb] : composed)
+      whole.push_back({f, std::move(fb)});
+    images = std::move(whole);
+  }
+  // Images, in frame order, against the host's sequential renderer.
+  std::sort(images.begin(), images.end(),
+            [](const FrameImage& a, const FrameImage& b) { return a.frame < b.frame; });
+  nlohmann::json img = nlohmann::json::object();
+  if (ok) {
+    bool identical = int(images.size()) == cfg.options.frames;
+    std::vector<std::string> shas;
+    for (int f = 0; f < int(images.size()); ++f) {
+      shas.push_back(image_sha256(images[f].image));
+      if (cfg.compare_with_sequential) {
+        Scene sf = scene;
+        sf.camera = camera_at_frame(scene.camera, f, cfg.options.frames);
+        identical = identical && image_sha256(render_scene(sf, 1).image) == shas.back();
+      }
+    }
+    img["sha256"] = shas.empty() ? nlohmann::json(nullptr) : nlohmann::json(shas.back());
+    if (shas.size() > 1) img["frames_sha256"] = shas;
+    img["identical_to_sequential"] =
+        cfg.compare_with_sequential ? nlohmann::json(identical) : nlohmann::json(nullptr);
+  }
+  j["image"] = img;
+  for (auto& fi : images)
+    out.push_back(std::move(fi.image));
+}
+
+} // namespace zc

@@ -1,0 +1,55 @@
+#pragma once
+// The report of DESIGN §4 from what each node recorded: shared by the SimGrid backend (virtual
+// times) and any other backend (measured times), so both write the same schema.
+#include <map>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "raster/counters.hpp"
+#include "raster/framebuffer.hpp"
+#include "scene/scene.hpp"
+#include "sim/simulation.hpp"
+
+namespace zc {
+
+// Counters of one node's run, whatever the backend.
+struct NodeStats {
+  double busy_s = 0, comm_s = 0, finish_s = 0;
+  std::uint64_t bytes_sent = 0, messages = 0;
+  double memory = 0, peak_memory = 0;
+};
+
+// A picture (or, partial, rows of one) handed over by a node.
+struct FrameImage {
+  int frame;
+  Framebuffer image;
+  bool partial = false; // rows of the frame (deliver_rows), pasted together after the run
+};
+
+// What one node (or the host computer, rank "srm") recorded.
+struct NodeRecord {
+  nlohmann::json rank; // int, or "srm"
+  NodeStats stats;
+  std::vector<std::string> phase_order;
+  std::map<std::string, double> phase_totals;
+  std::map<std::string, Counters> phase_work;
+  Counters work;
+  nlohmann::json metrics = nlohmann::json::object();
+};
+void to_json(nlohmann::json& j, const NodeRecord& r);
+void from_json(const nlohmann::json& j, NodeRecord& r);
+
+// "phases", "per_node", "communication", "counters", "load_imbalance" and the algorithm's metrics
+// (node 0's, merged at the top level). `nodes` holds the P nodes in rank order, then the host if
+// it ran; total_s is the run's time (for idle_s).
+void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, int P,
+                       double total_s);
+
+// "image": rows pasted into frames, hashes, and the comparison with the sequential renderer
+// (when cfg.compare_with_sequential). The frames are moved to `out` in frame order.
+void add_image_section(nlohmann::json& j, std::vector<FrameImage>& images, const Scene& scene,
+                       const SimConfig& cfg, bool ok, std::vector<Framebuffer>& out);
+
+} // namespace zc
