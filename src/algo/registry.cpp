@@ -1,5 +1,6 @@
 #include "algo/algorithm.hpp"
 #include "algo/blazek_methods.hpp"
+#include "algo/comm_check.hpp"
 #include "algo/elastic.hpp"
 #include "algo/kurc_pixel_merging.hpp"
 #include "algo/pingpong.hpp"
@@ -10,7 +11,8 @@ namespace zc {
 
 const std::vector<Algorithm>& algorithms() {
   static const std::vector<Algorithm> all = [] {
-    std::vector<Algorithm> v = {sequential_algorithm(), elastic_algorithm(), pingpong_algorithm()};
+    std::vector<Algorithm> v = {sequential_algorithm(), elastic_algorithm(), pingpong_algorithm(),
+                                comm_check_algorithm()};
     for (auto& a : kurc_algorithms())
       v.push_back(a);
     for (auto& a : blazek_algorithms())

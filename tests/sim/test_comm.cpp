@@ -91,81 +91,27 @@ TEST(PointToPoint, SharedChannelSlowsFlowAndCircuitNotAnalytic) {
 
 namespace {
 
-// Runs every collective on the machine and checks its data on every node; records failures in
-// the node's metrics.
-void all_collectives(NodeContext& ctx) {
-  Comm& c = ctx.comm();
-  const int P = c.size(), r = c.rank();
-  int bad = 0;
-  auto check = [&](bool ok) { bad += !ok; };
-  auto block = [](int owner, int n) {
-    Bytes b(std::size_t(n), 0);
-    for (int i = 0; i < n; ++i)
-      b[i] = std::uint8_t(owner * 31 + i);
-    return b;
-  };
-  for (int root : {0, P - 1, P / 2}) {
-    Bytes b = coll::broadcast(c, root, r == root ? block(root, 300) : Bytes{});
-    check(b == block(root, 300));
-    std::vector<Bytes> parts;
-    if (r == root)
-      for (int k = 0; k < P; ++k)
-        parts.push_back(block(k, 10 + k));
-    check(coll::scatterv(c, root, parts) == block(r, 10 + r));
-    auto g = coll::gatherv(c, root, block(r, 5 + 2 * r));
-    if (r == root) {
-      check(int(g.size()) == P);
-      for (int k = 0; k < P && k < int(g.size()); ++k)
-        check(g[k] == block(k, 5 + 2 * k));
-    }
-    auto red = coll::reduce(c, root, std::vector<std::int64_t>{r, 1, -r}, coll::Op::Sum);
-    if (r == root) check(red == (std::vector<std::int64_t>{P * (P - 1) / 2, P, -P * (P - 1) / 2}));
-  }
-  auto all = coll::allgatherv(c, block(r, 7 * r + 1));
-  check(int(all.size()) == P);
-  for (int k = 0; k < P; ++k)
-    check(all[k] == block(k, 7 * k + 1));
-  check(coll::allreduce(c, std::vector<std::int64_t>{r, r}, coll::Op::Max) ==
-        std::vector<std::int64_t>{P - 1, P - 1});
-  check(coll::allreduce(c, std::vector<std::int64_t>{r + 5}, coll::Op::Min) ==
-        std::vector<std::int64_t>{5});
-  auto d = coll::allreduce(c, std::vector<double>{0.1 * r, 1.0 / (r + 1)}, coll::Op::Sum);
-  auto dmax = coll::allreduce(c, d, coll::Op::Max); // every node must hold the same bits
-  check(d == dmax);
-  auto ps = coll::prefix_sum(c, std::vector<std::int64_t>{1, r});
-  check(ps == (std::vector<std::int64_t>{r + 1, std::int64_t(r) * (r + 1) / 2}));
-  for (auto how : {coll::AllToAll::Direct, coll::AllToAll::Pairwise}) {
-    std::vector<Bytes> out;
-    for (int k = 0; k < P; ++k)
-      out.push_back(block(r * 100 + k, (r + k) % 5));
-    auto in = coll::alltoallv(c, out, how);
-    for (int k = 0; k < P; ++k)
-      check(in[k] == block(k * 100 + r, (k + r) % 5));
-  }
-  coll::barrier(c);
-  ctx.metrics()["bad"] = bad;
-}
-
-void expect_all_good(const nlohmann::json& rep, int P) {
+// The comm-check algorithm (algo/comm_check: the same self-test runs under MPI, tests/mpi) on a
+// simulated machine.
+void expect_all_good(SimConfig c, int P) {
+  c.algorithm = "comm-check";
+  const auto rep = run_simulation_isolated(c);
   ASSERT_EQ(rep["status"], "ok") << rep.dump();
   ASSERT_EQ(int(rep["per_node"].size()), P);
   for (const auto& n : rep["per_node"])
-    EXPECT_EQ(n["metrics"]["bad"], 0) << n.dump();
+    EXPECT_TRUE(n["metrics"]["comm_check_failures"].empty()) << n.dump();
 }
 
 } // namespace
 
 TEST(Collectives, DeliverTheRightDataOnCubes) {
   for (int P : {1, 2, 4, 8, 16, 32})
-    expect_all_good(
-        run_custom(sim_config("ipsc860", P, Topology::Cube, Fidelity::Circuit), all_collectives),
-        P);
+    expect_all_good(sim_config("ipsc860", P, Topology::Cube, Fidelity::Circuit), P);
 }
 
 TEST(Collectives, DeliverTheRightDataOnRings) {
   for (int P : {2, 3, 4, 5, 8, 16})
-    expect_all_good(
-        run_custom(sim_config("volvox", P, Topology::Ring, Fidelity::Flow), all_collectives), P);
+    expect_all_good(sim_config("volvox", P, Topology::Ring, Fidelity::Flow), P);
 }
 
 TEST(Collectives, ClosedFormTimesUnderAnalytic) {
@@ -201,12 +147,13 @@ TEST(Scaling, VirtualTimeScalesExactlyWithAGlobalCostFactor) {
   base.algorithm = "sequential";
   base.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/teapot.json";
   base.width = base.height = 128;
-  auto work = [](NodeContext& ctx) {
-    all_collectives(ctx);
+  const auto check = find_algorithm("comm-check").node;
+  auto work = [check](NodeContext& ctx) {
+    check(ctx);
     Counters c;
     c.pixels_generated = 1000 + 10 * std::uint64_t(ctx.rank());
     ctx.charge(c);
-    all_collectives(ctx);
+    check(ctx);
   };
   for (Fidelity f : {Fidelity::Analytic, Fidelity::Flow, Fidelity::Circuit}) {
     base.fidelity = f;

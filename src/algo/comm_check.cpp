@@ -1,0 +1,108 @@
+#include "algo/comm_check.hpp"
+
+#include <stdexcept>
+
+#include "comm/collectives.hpp"
+#include "comm/wire.hpp"
+
+namespace zc {
+
+namespace {
+
+Bytes block(int owner, int n) {
+  Bytes b(std::size_t(n), 0);
+  for (int i = 0; i < n; ++i)
+    b[std::size_t(i)] = std::uint8_t(owner * 31 + i);
+  return b;
+}
+
+void comm_check_node(NodeContext& ctx) {
+  Comm& c = ctx.comm();
+  const int P = c.size(), r = c.rank();
+  std::vector<std::string> failures;
+  auto check = [&](bool ok, const std::string& what) {
+    if (!ok) failures.push_back(what);
+  };
+  for (int root : {0, P - 1, P / 2}) {
+    const std::string at = " (root " + std::to_string(root) + ")";
+    check(coll::broadcast(c, root, r == root ? block(root, 300) : Bytes{}) == block(root, 300),
+          "broadcast" + at);
+    std::vector<Bytes> parts;
+    if (r == root)
+      for (int k = 0; k < P; ++k)
+        parts.push_back(block(k, 10 + k));
+    check(coll::scatterv(c, root, parts) == block(r, 10 + r), "scatterv" + at);
+    auto g = coll::gatherv(c, root, block(r, 5 + 2 * r));
+    if (r == root) {
+      bool ok = int(g.size()) == P;
+      for (int k = 0; ok && k < P; ++k)
+        ok = g[std::size_t(k)] == block(k, 5 + 2 * k);
+      check(ok, "gatherv" + at);
+    }
+    auto red = coll::reduce(c, root, std::vector<std::int64_t>{r, 1, -r}, coll::Op::Sum);
+    if (r == root)
+      check(red == (std::vector<std::int64_t>{P * (P - 1) / 2, P, -P * (P - 1) / 2}),
+            "reduce" + at);
+  }
+  auto all = coll::allgatherv(c, block(r, 7 * r + 1));
+  bool ok = int(all.size()) == P;
+  for (int k = 0; ok && k < P; ++k)
+    ok = all[std::size_t(k)] == block(k, 7 * k + 1);
+  check(ok, "allgatherv");
+  check(coll::allreduce(c, std::vector<std::int64_t>{r, r}, coll::Op::Max) ==
+            std::vector<std::int64_t>{P - 1, P - 1},
+        "allreduce max");
+  check(coll::allreduce(c, std::vector<std::int64_t>{r + 5}, coll::Op::Min) ==
+            std::vector<std::int64_t>{5},
+        "allreduce min");
+  auto d = coll::allreduce(c, std::vector<double>{0.1 * r, 1.0 / (r + 1)}, coll::Op::Sum);
+  check(d == coll::allreduce(c, d, coll::Op::Max), "allreduce: every node holds the same bits");
+  check(coll::prefix_sum(c, std::vector<std::int64_t>{1, r}) ==
+            std::vector<std::int64_t>{r + 1, std::int64_t(r) * (r + 1) / 2},
+        "prefix_sum");
+  for (auto how : {coll::AllToAll::Direct, coll::AllToAll::Pairwise}) {
+    std::vector<Bytes> out;
+    for (int k = 0; k < P; ++k)
+      out.push_back(block(r * 100 + k, (r + k) % 5));
+    auto in = coll::alltoallv(c, out, how);
+    bool a2a = int(in.size()) == P;
+    for (int k = 0; a2a && k < P; ++k)
+      a2a = in[std::size_t(k)] == block(k * 100 + r, (k + r) % 5);
+    check(a2a, how == coll::AllToAll::Direct ? "alltoallv direct" : "alltoallv pairwise");
+  }
+  // Point to point: three messages per (source, tag) on two tags arrive in order, from any source.
+  constexpr int kTagA = 900, kTagB = 901, kCount = 3;
+  if (P > 1) {
+    const int next = (r + 1) % P, prev = (r + P - 1) % P;
+    std::vector<SendHandle> hs;
+    for (int i = 0; i < kCount; ++i)
+      for (int tag : {kTagA, kTagB})
+        hs.push_back(c.isend(next, tag, pack(std::vector<std::int32_t>{r, tag, i})));
+    for (int tag : {kTagB, kTagA})
+      for (int i = 0; i < kCount; ++i) {
+        int from = -2;
+        auto v = unpack<std::int32_t>(c.recv(i == 0 ? kAnySource : prev, tag, &from));
+        check(from == prev && v == std::vector<std::int32_t>{prev, tag, i},
+              "FIFO per (source, tag)");
+      }
+    for (auto& h : hs)
+      h->wait();
+  }
+  coll::barrier(c);
+  ctx.metrics()["comm_check_failures"] = failures;
+  if (!failures.empty())
+    throw std::runtime_error(std::to_string(failures.size()) +
+                             " wrong communications, first: " + failures.front());
+}
+
+} // namespace
+
+Algorithm comm_check_algorithm() {
+  Algorithm a;
+  a.name = "comm-check";
+  a.summary = "self-test: every collective and FIFO point-to-point order, data checked";
+  a.node = comm_check_node;
+  return a;
+}
+
+} // namespace zc
