@@ -6,6 +6,7 @@ cd "$(dirname "$0")/.."
 PKGS=(build-essential cmake ccache pkg-config libsimgrid-dev libglm-dev libopenimageio-dev
       nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
       libtinyobjloader-dev libssl-dev python3-matplotlib
+      libopenmpi-dev openmpi-bin
       libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri)
 missing=()
 for p in "${PKGS[@]}"; do

@@ -11,6 +11,11 @@
 #include "repro/paper_figures.hpp"
 #include "scene/load.hpp"
 #include "sim/run_flags.hpp"
+#include "util/error.hpp"
+#ifdef ZCUBE_HAVE_MPI
+#include "mpi/mpi_run.hpp"
+#include "mpi/mpi_session.hpp"
+#endif
 
 namespace zc::cli {
 
@@ -35,6 +40,42 @@ static nlohmann::json report_header(const SimConfig& cfg) {
           {"scene", {{"path", cfg.scene_path}, {"width", w}, {"height", h}}}};
 }
 
+// Writes the report and pictures and prints the summary (rank 0 only under MPI).
+static int finish(const SimResult& r, const std::string& report, const std::string& image,
+                  const std::string& depth) {
+  if (!report.empty()) std::ofstream(report) << r.report.dump(2) << "\n";
+  if (!r.ok) {
+    std::cerr << "zcube: error: " << r.error << "\n";
+    return 1;
+  }
+  if (!image.empty() && !r.images.empty()) write_png(r.images.back(), image);
+  if (!depth.empty() && !r.images.empty()) write_depth_exr(r.images.back(), depth);
+  const auto& j = r.report;
+  std::cout << std::setprecision(6) << j["algorithm"].get<std::string>() << " on "
+            << j["machine"].get<std::string>() << " (" << j["nodes"] << " nodes, "
+            << j["topology"].get<std::string>() << ", " << j["fidelity"].get<std::string>()
+            << "): " << (j.value("measured", false) ? "measured" : "virtual") << " time "
+            << j["virtual_time_s"].get<double>() << " s\n";
+  for (const auto& p : j["phases"])
+    std::cout << "  " << std::left << std::setw(28) << p["name"].get<std::string>() << " max "
+              << p["max_s"].get<double>() << " s\n";
+  if (j.contains("paper"))
+    for (const auto& f : j["paper"]) {
+      std::cout << "paper: " << f["source"].get<std::string>() << ": "
+                << (f.contains("phase") ? f["phase"].get<std::string>() + " " : "")
+                << f["quantity"].get<std::string>() << " " << f["paper"].get<double>();
+      if (f.contains("predicted"))
+        std::cout << ", predicted " << f["predicted"].get<double>() << " (error " << std::showpos
+                  << 100 * f["rel_error"].get<double>() << std::noshowpos << " %)";
+      std::cout << "\n";
+    }
+  if (j["image"].contains("identical_to_sequential"))
+    std::cout << "image identical to the sequential renderer's: "
+              << j["image"]["identical_to_sequential"] << "\n";
+  std::cout << "host wall time " << j["host"]["wall_time_s"].get<double>() << " s\n";
+  return 0;
+}
+
 static int cmd_run(std::vector<std::string> args) {
   CLI::App app{"Simulate a parallel z-buffer algorithm on a 1990s machine model", "zcube run"};
   SimFlags sf;
@@ -55,6 +96,11 @@ static int cmd_run(std::vector<std::string> args) {
   app.add_option("--packet", packet, "host-initiated: polygons per packet");
   app.add_option("--lines", lines, "host-broadcast: strips or interleaved");
   app.add_option("--forward", forward, "object-forwarding: object or polygons");
+  std::string backend = "sim";
+  app.add_option("--backend", backend,
+                 "sim (SimGrid, virtual time) or mpi (real processes under mpirun, measured time)")
+      ->check(CLI::IsMember({"sim", "mpi"}))
+      ->capture_default_str();
   bool list = false;
   app.add_flag("--list", list, "list the algorithms and exit");
   if (int rc = parse(app, args); rc >= 0) return rc;
@@ -75,6 +121,16 @@ static int cmd_run(std::vector<std::string> args) {
   // A speed-up figure of a paper needs the sequential time on the same machine: one more
   // simulation, in its own process and before this one (a forked child must not inherit a
   // SimGrid engine).
+  if (backend == "mpi") {
+#ifdef ZCUBE_HAVE_MPI
+    MpiSession mpi;
+    SimResult r = run_mpi(cfg);
+    return mpi.rank() == 0 ? finish(r, report, image, depth) : 0;
+#else
+    throw UsageError("--backend mpi: this zcube was built without MPI (scripts/setup.sh installs "
+                     "libopenmpi-dev; then rebuild)");
+#endif
+  }
   std::optional<double> seq_s;
   if (cfg.algorithm == "elastic" && cfg.machine == "ipsc860" && // cheap tests before loading
       needs_sequential_time(report_header(cfg))) {
@@ -88,36 +144,7 @@ static int cmd_run(std::vector<std::string> args) {
   }
   SimResult r = run_simulation(cfg);
   if (r.ok && seq_s) r.report["paper"] = paper_figures_for(r.report, seq_s);
-  if (!report.empty()) std::ofstream(report) << r.report.dump(2) << "\n";
-  if (!r.ok) {
-    std::cerr << "zcube: error: " << r.error << "\n";
-    return 1;
-  }
-  if (!image.empty() && !r.images.empty()) write_png(r.images.back(), image);
-  if (!depth.empty() && !r.images.empty()) write_depth_exr(r.images.back(), depth);
-  const auto& j = r.report;
-  std::cout << std::setprecision(6) << j["algorithm"].get<std::string>() << " on "
-            << j["machine"].get<std::string>() << " (" << j["nodes"] << " nodes, "
-            << j["topology"].get<std::string>() << ", " << j["fidelity"].get<std::string>()
-            << "): virtual time " << j["virtual_time_s"].get<double>() << " s\n";
-  for (const auto& p : j["phases"])
-    std::cout << "  " << std::left << std::setw(28) << p["name"].get<std::string>() << " max "
-              << p["max_s"].get<double>() << " s\n";
-  if (j.contains("paper"))
-    for (const auto& f : j["paper"]) {
-      std::cout << "paper: " << f["source"].get<std::string>() << ": "
-                << (f.contains("phase") ? f["phase"].get<std::string>() + " " : "")
-                << f["quantity"].get<std::string>() << " " << f["paper"].get<double>();
-      if (f.contains("predicted"))
-        std::cout << ", predicted " << f["predicted"].get<double>() << " (error " << std::showpos
-                  << 100 * f["rel_error"].get<double>() << std::noshowpos << " %)";
-      std::cout << "\n";
-    }
-  if (j["image"].contains("identical_to_sequential"))
-    std::cout << "image identical to the sequential renderer's: "
-              << j["image"]["identical_to_sequential"] << "\n";
-  std::cout << "host wall time " << j["host"]["wall_time_s"].get<double>() << " s\n";
-  return 0;
+  return finish(r, report, image, depth);
 }
 
 ZC_COMMAND("run", "simulate an algorithm on a machine model", cmd_run);

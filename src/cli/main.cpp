@@ -2,8 +2,10 @@
 // Exit status: 0 success, 2 usage or input error (one line on stderr naming file, line, reason),
 // 1 anything else.
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <iostream>
+#include <sstream>
 
 #include "cli/command.hpp"
 #include "util/error.hpp"
@@ -21,6 +23,14 @@ static void usage(std::ostream& os) {
   for (const auto& [name, info] : zc::cli::registry())
     os << "  " << name << std::string(name.size() < 12 ? 12 - name.size() : 1, ' ') << info.summary
        << "\n";
+}
+
+// Under mpirun every rank meets the same bad input: only rank 0 says so (one line, as always).
+static std::ostream& errors() {
+  static std::ostringstream quiet;
+  for (const char* k : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
+    if (const char* v = std::getenv(k); v && std::atoi(v) > 0) return quiet;
+  return std::cerr;
 }
 
 int main(int argc, char** argv) {
@@ -43,16 +53,16 @@ int main(int argc, char** argv) {
   try {
     return it->second.run(args);
   } catch (const zc::InputError& e) {
-    std::cerr << "zcube: error: " << e.what() << "\n";
+    errors() << "zcube: error: " << e.what() << "\n";
     return 2;
   } catch (const zc::UsageError& e) {
-    std::cerr << "zcube: error: " << e.what() << "\n";
+    errors() << "zcube: error: " << e.what() << "\n";
     return 2;
   } catch (const std::bad_alloc&) {
-    std::cerr << "zcube: error: out of host memory\n";
+    errors() << "zcube: error: out of host memory\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "zcube: error: " << e.what() << "\n";
+    errors() << "zcube: error: " << e.what() << "\n";
     return 1;
   }
 }

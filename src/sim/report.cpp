@@ -1,5 +1,7 @@
 #include "sim/report.hpp"
 
+#include <sys/resource.h>
+
 #include <algorithm>
 
 #include "geometry/camera_path.hpp"
@@ -170,6 +172,12 @@ void add_image_section(nlohmann::json& j, std::vector<FrameImage>& images, const
   j["image"] = img;
   for (auto& fi : images)
     out.push_back(std::move(fi.image));
+}
+
+std::size_t peak_rss_bytes() {
+  struct rusage ru {};
+  getrusage(RUSAGE_SELF, &ru);
+  return std::size_t(ru.ru_maxrss) * 1024;
 }
 
 } // namespace zc

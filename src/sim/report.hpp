@@ -52,4 +52,7 @@ void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, 
 void add_image_section(nlohmann::json& j, std::vector<FrameImage>& images, const Scene& scene,
                        const SimConfig& cfg, bool ok, std::vector<Framebuffer>& out);
 
+// The host process's peak resident set (the report's host.peak_rss_bytes).
+std::size_t peak_rss_bytes();
+
 } // namespace zc

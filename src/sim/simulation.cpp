@@ -1,6 +1,5 @@
 #include "sim/simulation.hpp"
 
-#include <sys/resource.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -117,12 +116,6 @@ void apply_overrides(const Overrides& o, PlatformModel& m, sg::Engine& e) {
     const double per_byte = name.rfind("host-", 0) == 0 ? n.host_per_byte_s : n.per_byte_s;
     l->set_bandwidth(per_byte > 0 ? 1.0 / per_byte : 1e15);
   }
-}
-
-std::size_t peak_rss_bytes() {
-  struct rusage ru {};
-  getrusage(RUSAGE_SELF, &ru);
-  return std::size_t(ru.ru_maxrss) * 1024;
 }
 
 std::string write_temp_platform(const std::string& xml, const std::string& name) {

@@ -1,0 +1,85 @@
+#include "mpi/mpi_comm.hpp"
+
+#include <climits>
+#include <stdexcept>
+#include <string>
+
+namespace zc {
+
+namespace {
+
+int byte_count(const Bytes& b) {
+  if (b.size() > std::size_t(INT_MAX))
+    throw std::runtime_error("MPI message of " + std::to_string(b.size()) +
+                             " bytes: more than one MPI count can carry");
+  return int(b.size());
+}
+
+class MpiSend final : public SendRequest {
+public:
+  MpiSend(Bytes data, int dst, int tag, MPI_Comm comm) : data_(std::move(data)) {
+    MPI_Isend(data_.data(), byte_count(data_), MPI_BYTE, dst, tag, comm, &req_);
+  }
+  ~MpiSend() override { wait(); } // the buffer must outlive the transfer
+  void wait() override {
+    if (req_ != MPI_REQUEST_NULL) MPI_Wait(&req_, MPI_STATUS_IGNORE);
+  }
+
+private:
+  Bytes data_;
+  MPI_Request req_ = MPI_REQUEST_NULL;
+};
+
+} // namespace
+
+MpiComm::MpiComm(MPI_Comm world, int nodes, Topology topology, NodeStats& stats)
+    : world_(world), nodes_(nodes), topology_(topology), stats_(stats) {
+  MPI_Comm_rank(world_, &rank_);
+  MPI_Comm_size(world_, &world_size_);
+  int* ub = nullptr;
+  int flag = 0;
+  MPI_Comm_get_attr(world_, MPI_TAG_UB, &ub, &flag);
+  if (flag && ub) tag_ub_ = *ub;
+  t0_ = MPI_Wtime();
+}
+
+void MpiComm::check_peer(int peer, int tag) const {
+  if (peer < 0 || peer >= world_size_)
+    throw std::runtime_error("rank " + std::to_string(rank_) + ": no MPI rank " +
+                             std::to_string(peer));
+  if (tag < 0 || tag > tag_ub_)
+    throw std::runtime_error("tag " + std::to_string(tag) + " above this MPI's MPI_TAG_UB " +
+                             std::to_string(tag_ub_));
+}
+
+void MpiComm::send(int dst, int tag, Bytes data) {
+  check_peer(dst, tag);
+  const double t = MPI_Wtime();
+  MPI_Send(data.data(), byte_count(data), MPI_BYTE, dst, tag, world_);
+  stats_.comm_s += MPI_Wtime() - t;
+  stats_.bytes_sent += data.size();
+  ++stats_.messages;
+}
+
+SendHandle MpiComm::isend(int dst, int tag, Bytes data) {
+  check_peer(dst, tag);
+  stats_.bytes_sent += data.size();
+  ++stats_.messages;
+  return std::make_unique<MpiSend>(std::move(data), dst, tag, world_);
+}
+
+Bytes MpiComm::recv(int src, int tag, int* from) {
+  if (src != kAnySource) check_peer(src, tag);
+  const double t = MPI_Wtime();
+  MPI_Status st;
+  MPI_Probe(src == kAnySource ? MPI_ANY_SOURCE : src, tag, world_, &st);
+  int n = 0;
+  MPI_Get_count(&st, MPI_BYTE, &n);
+  Bytes b(static_cast<std::size_t>(n));
+  MPI_Recv(b.data(), n, MPI_BYTE, st.MPI_SOURCE, tag, world_, MPI_STATUS_IGNORE);
+  stats_.comm_s += MPI_Wtime() - t;
+  if (from) *from = st.MPI_SOURCE;
+  return b;
+}
+
+} // namespace zc

@@ -1,0 +1,39 @@
+#pragma once
+// MPI backend of the communication layer (Charles et al.'s PPCM idea: one program, portable
+// across machines). Ranks 0..P-1 are the nodes; with a host-computer algorithm the last rank is
+// the host (Comm::host_rank() == size()). MPI guarantees non-overtaking per (source, tag), which is
+// the order the Comm interface promises. now() is wall-clock seconds since a common barrier.
+#include <mpi.h>
+
+#include "comm/comm.hpp"
+#include "sim/report.hpp"
+
+namespace zc {
+
+class MpiComm final : public Comm {
+public:
+  // `nodes` = world size, or world size - 1 when the last rank is the host computer.
+  MpiComm(MPI_Comm world, int nodes, Topology topology, NodeStats& stats);
+
+  int rank() const override { return rank_; }
+  int size() const override { return nodes_; }
+  Topology topology() const override { return topology_; }
+  void send(int dst, int tag, Bytes data) override;
+  SendHandle isend(int dst, int tag, Bytes data) override;
+  Bytes recv(int src, int tag, int* from = nullptr) override;
+  double now() const override { return MPI_Wtime() - t0_; }
+
+  // Restarts the clock: every rank calls it after a barrier, so phase times share one origin.
+  void reset_clock() { t0_ = MPI_Wtime(); }
+
+private:
+  void check_peer(int peer, int tag) const;
+
+  MPI_Comm world_;
+  int rank_ = 0, world_size_ = 0, nodes_ = 0, tag_ub_ = 32767;
+  Topology topology_;
+  NodeStats& stats_;
+  double t0_ = 0;
+};
+
+} // namespace zc

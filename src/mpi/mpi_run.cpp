@@ -1,0 +1,168 @@
+#include "mpi/mpi_run.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+
+#include "comm/wire.hpp"
+#include "mpi/mpi_comm.hpp"
+#include "mpi/mpi_context.hpp"
+#include "mpi/mpi_session.hpp"
+#include "repro/paper_figures.hpp"
+#include "scene/load.hpp"
+#include "util/error.hpp"
+
+namespace zc {
+
+namespace {
+
+[[noreturn]] void abort_job(int rank, const std::string& what) {
+  std::cerr << "zcube: error: rank " << rank << ": " << what << "\n" << std::flush;
+  MPI_Abort(MPI_COMM_WORLD, 1);
+  std::exit(1); // not reached
+}
+
+// A delivered picture (or rows) as bytes, and back.
+Bytes pack_images(const std::vector<FrameImage>& images) {
+  Bytes b;
+  for (const auto& fi : images) {
+    const RowSet& rs = fi.image.rows();
+    const std::int64_t head[] = {fi.frame,
+                                 fi.partial,
+                                 fi.image.width(),
+                                 rs.begin,
+                                 rs.end,
+                                 rs.stride,
+                                 std::int64_t(fi.image.pixel_count())};
+    append(b, head, 7);
+    append(b, fi.image.rgb().data(), fi.image.rgb().size());
+    append(b, fi.image.depth().data(), fi.image.depth().size());
+    append(b, fi.image.ids().data(), fi.image.ids().size());
+  }
+  return b;
+}
+
+std::vector<FrameImage> unpack_images(const Bytes& b) {
+  std::vector<FrameImage> out;
+  std::size_t off = 0;
+  auto take = [&](void* dst, std::size_t n) {
+    if (off + n > b.size()) throw std::runtime_error("picture transfer truncated");
+    std::copy(b.begin() + std::ptrdiff_t(off), b.begin() + std::ptrdiff_t(off + n),
+              static_cast<std::uint8_t*>(dst));
+    off += n;
+  };
+  while (off < b.size()) {
+    std::int64_t h[7];
+    take(h, sizeof h);
+    Framebuffer fb(int(h[2]), RowSet{int(h[3]), int(h[4]), int(h[5])}, glm::vec3(0));
+    const std::size_t n = std::size_t(h[6]);
+    if (fb.pixel_count() != n) throw std::runtime_error("picture transfer: bad size");
+    take(fb.rgb().data(), 3 * n);
+    take(fb.depth().data(), 4 * n);
+    take(fb.ids().data(), 4 * n);
+    out.push_back({int(h[0]), std::move(fb), h[1] != 0});
+  }
+  return out;
+}
+
+std::string host_name() {
+  char buf[256] = {};
+  gethostname(buf, sizeof buf - 1);
+  return buf;
+}
+
+} // namespace
+
+SimResult run_mpi(const SimConfig& cfg) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  int rank = 0, world = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &world);
+  const Algorithm& algo = cfg.custom ? *cfg.custom : find_algorithm(cfg.algorithm);
+  for (const auto& [k, v] : cfg.options.values)
+    if (std::find(algo.option_keys.begin(), algo.option_keys.end(), k) == algo.option_keys.end())
+      throw UsageError("--" + k + " does not apply to algorithm " + algo.name);
+  // The host computer of Blazek's methods is the last rank: P nodes need P + 1 processes.
+  const int P = world - (algo.uses_host ? 1 : 0);
+  if (P < 1)
+    throw UsageError(algo.name + " runs a host computer beside its nodes: mpirun -np P+1 (at "
+                                 "least 2 processes)");
+  check_node_count(cfg.topology, P);
+  if (cfg.nodes > 1 && cfg.nodes != P)
+    throw UsageError("--nodes " + std::to_string(cfg.nodes) + " but MPI gives " +
+                     std::to_string(P) + " nodes (mpirun -np " +
+                     std::to_string(cfg.nodes + (algo.uses_host ? 1 : 0)) + ")");
+
+  LoadOptions lo;
+  lo.width = cfg.width;
+  lo.height = cfg.height;
+  const Scene scene = load_scene(cfg.scene_path, lo);
+
+  NodeStats stats;
+  std::vector<FrameImage> images;
+  MpiComm comm(MPI_COMM_WORLD, P, cfg.topology, stats);
+  MpiContext ctx(comm, stats, scene, cfg.options, cfg.overrides.memory_bytes.value_or(0.0), images);
+  MPI_Barrier(MPI_COMM_WORLD);
+  comm.reset_clock();
+  try {
+    if (rank < P)
+      algo.node(ctx);
+    else
+      algo.host(ctx);
+  } catch (const std::exception& ex) {
+    abort_job(rank, ex.what());
+  }
+  stats.finish_s = comm.now();
+  const double total = max_over_ranks(stats.finish_s);
+
+  const nlohmann::json mine = {
+      {"record", ctx.record(rank == P ? nlohmann::json("srm") : nlohmann::json(rank))},
+      {"host", host_name()}};
+  const std::string text = mine.dump();
+  const auto records = gather_to_root(Bytes(text.begin(), text.end()));
+  const auto pictures = gather_to_root(pack_images(images));
+
+  SimResult res;
+  if (rank != 0) return res;
+  std::vector<NodeRecord> nodes;
+  nlohmann::json processors = nlohmann::json::array();
+  for (const auto& b : records) {
+    const auto j = nlohmann::json::parse(std::string(b.begin(), b.end()));
+    nodes.push_back(j["record"].get<NodeRecord>());
+    processors.push_back(j["host"]);
+  }
+  std::vector<FrameImage> all;
+  for (const auto& b : pictures)
+    for (auto& fi : unpack_images(b))
+      all.push_back(std::move(fi));
+
+  nlohmann::json& j = res.report;
+  j["backend"] = "mpi";
+  j["measured"] = true;
+  j["machine"] = "mpi";
+  j["platform"] = "MPI_COMM_WORLD";
+  j["processors"] = processors;
+  j["nodes"] = P;
+  j["topology"] = topology_name(cfg.topology);
+  j["fidelity"] = "measured";
+  j["algorithm"] = algo.name;
+  j["options"] = cfg.options.values;
+  j["frames"] = cfg.options.frames;
+  j["scene"] = {{"path", cfg.scene_path},
+                {"triangles", scene.triangles.size()},
+                {"vertices", scene.vertices.size()},
+                {"width", scene.width},
+                {"height", scene.height}};
+  j["status"] = "ok";
+  j["virtual_time_s"] = total; // measured: the slowest rank's wall-clock time
+  add_node_sections(j, nodes, P, total);
+  add_image_section(j, all, scene, cfg, true, res.images);
+  j["host"] = {{"wall_time_s",
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count()},
+               {"peak_rss_bytes", peak_rss_bytes()}};
+  return res;
+}
+
+} // namespace zc

@@ -1,0 +1,13 @@
+#pragma once
+// `zcube run --backend mpi`: the same algorithm code as the simulator, on the MPI processes of a
+// real machine. Every rank calls run_mpi; rank 0 gets the report (the schema of DESIGN §4, with
+// measured wall-clock times: "measured": true, "backend": "mpi") and the pictures.
+#include "sim/simulation.hpp"
+
+namespace zc {
+
+// Call on every rank between MPI_Init and MPI_Finalize (an MpiSession). A failure on any rank
+// aborts the job with the error on stderr (the other ranks would wait forever otherwise).
+SimResult run_mpi(const SimConfig& cfg);
+
+} // namespace zc

@@ -1,0 +1,57 @@
+#include "sim/recording_context.hpp"
+
+#include <algorithm>
+
+namespace zc {
+
+void RecordingContext::charge(const Counters& w) {
+  work_ += w;
+  phase_work_[open_.empty() ? std::string() : open_.back().first] += w;
+  spend(w);
+}
+
+void RecordingContext::phase_begin(const std::string& name) {
+  open_.emplace_back(name, comm_.now());
+  if (std::find(phase_order_.begin(), phase_order_.end(), name) == phase_order_.end())
+    phase_order_.push_back(name);
+}
+
+void RecordingContext::phase_end() {
+  if (open_.empty()) return;
+  auto [name, t0] = open_.back();
+  open_.pop_back();
+  phase_totals_[name] += comm_.now() - t0;
+}
+
+void RecordingContext::alloc(double bytes, const std::string& what) {
+  stats_.memory += bytes;
+  stats_.peak_memory = std::max(stats_.peak_memory, stats_.memory);
+  if (memory_capacity_ > 0 && stats_.memory > memory_capacity_)
+    throw OutOfNodeMemory(comm_.rank(), what, stats_.memory, memory_capacity_);
+}
+
+void RecordingContext::release(double bytes) {
+  stats_.memory = std::max(0.0, stats_.memory - bytes);
+}
+
+void RecordingContext::deliver_image(int frame, Framebuffer image) {
+  images_.push_back({frame, std::move(image)});
+}
+
+void RecordingContext::deliver_rows(int frame, Framebuffer rows) {
+  images_.push_back({frame, std::move(rows), true});
+}
+
+NodeRecord RecordingContext::record(nlohmann::json rank) const {
+  NodeRecord r;
+  r.rank = std::move(rank);
+  r.stats = stats_;
+  r.phase_order = phase_order_;
+  r.phase_totals = phase_totals_;
+  r.phase_work = phase_work_;
+  r.work = work_;
+  r.metrics = metrics_;
+  return r;
+}
+
+} // namespace zc
