@@ -55,6 +55,7 @@ struct MachineSpec {
   NetworkParams net;
   CostTable cost;
   bool cost_calibrated = false;
+  std::string generated_by; // the platform file's provenance line; empty: `zcube platform ...`
 };
 
 // The calibration fits one multiplier per group of cost fields: fields of a group are the same kind

@@ -1,0 +1,57 @@
+// zcube probe: measure the cluster under mpirun and write its platform file (mpi/probe.hpp).
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+
+#include "cli/command.hpp"
+#include "cli/parse.hpp"
+#include "cli/paths.hpp"
+#include "util/error.hpp"
+#ifdef ZCUBE_HAVE_MPI
+#include "mpi/mpi_session.hpp"
+#include "mpi/probe.hpp"
+#endif
+
+namespace zc::cli {
+
+static int cmd_probe(std::vector<std::string> args) {
+  CLI::App app{"Measure the MPI processes' network and CPU and write a platform of them "
+               "(mpirun -np P zcube probe --out cluster.xml)",
+               "zcube probe"};
+  std::string out = "cluster.xml", json;
+  double seconds = 0.2;
+  app.add_option("--out", out, "platform XML to write")->capture_default_str();
+  app.add_option("--json", json, "also write the measurements as JSON");
+  app.add_option("--seconds", seconds, "least time per CPU measurement")->capture_default_str();
+  if (int rc = parse(app, args); rc >= 0) return rc;
+#ifdef ZCUBE_HAVE_MPI
+  MpiSession mpi;
+  ProbeOptions o;
+  o.root = source_root();
+  o.out = out;
+  o.seconds = seconds;
+  const auto m = probe_cluster(o);
+  if (mpi.rank() != 0) return 0;
+  if (!json.empty()) std::ofstream(json) << m.dump(1) << "\n";
+  const auto& n = m["network"];
+  std::cout << std::setprecision(4) << "network: start-up "
+            << n["startup_short_s"].get<double>() * 1e6 << " us (short), "
+            << n["startup_long_s"].get<double>() * 1e6 << " us (long), "
+            << 1e-6 / std::max(n["per_byte_s"].get<double>(), 1e-300) << " MB/s\n"
+            << "CPU: multipliers of the 80386 prior table per cost group:";
+  for (const auto& k : m["cpu_group_scale"])
+    std::cout << " " << k.get<double>();
+  std::cout << "\nwrote " << out << " (" << m["nodes"] << " nodes, "
+            << m["topology"].get<std::string>() << "): zcube run --machine " << out
+            << " --fidelity analytic ...\n";
+  return 0;
+#else
+  (void)out;
+  throw UsageError("probe: this zcube was built without MPI (scripts/setup.sh installs "
+                   "libopenmpi-dev; then rebuild)");
+#endif
+}
+
+ZC_COMMAND("probe", "measure an MPI cluster and write its platform file", cmd_probe);
+
+} // namespace zc::cli

@@ -1,0 +1,256 @@
+#include "mpi/probe.hpp"
+
+#include <mpi.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include "machine/machine.hpp"
+#include "machine/platform_xml.hpp"
+#include "mpi/mpi_session.hpp"
+#include "raster/renderer.hpp"
+#include "repro/nnls.hpp"
+#include "scene/load.hpp"
+#include "util/error.hpp"
+
+namespace zc {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Best one-way time (half the round trip) between rank 0 and `peer` for `bytes`.
+double pingpong(int rank, int peer, std::size_t bytes, int reps) {
+  Bytes buf(std::max<std::size_t>(bytes, 1));
+  double best = 1e300;
+  for (int i = 0; i < reps; ++i) {
+    if (rank == 0) {
+      const double t = MPI_Wtime();
+      MPI_Send(buf.data(), int(bytes), MPI_BYTE, peer, 7, MPI_COMM_WORLD);
+      MPI_Recv(buf.data(), int(bytes), MPI_BYTE, peer, 7, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      best = std::min(best, (MPI_Wtime() - t) / 2);
+    } else if (rank == peer) {
+      MPI_Recv(buf.data(), int(bytes), MPI_BYTE, 0, 7, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      MPI_Send(buf.data(), int(bytes), MPI_BYTE, 0, 7, MPI_COMM_WORLD);
+    }
+  }
+  return best;
+}
+
+struct NetFit {
+  double short_s = 0, long_s = 0, per_byte_s = 0;
+  nlohmann::json samples = nlohmann::json::array();
+};
+
+NetFit measure_network(int rank, int size) {
+  const std::size_t sizes[] = {0, 8, 64, 100, 1024, 8192, 65536, 262144, 1048576};
+  NetFit f;
+  std::vector<double> xs, ys, shorts;
+  for (int peer = 1; peer < size; ++peer)
+    for (std::size_t m : sizes) {
+      const int reps = m <= 8192 ? 200 : m <= 65536 ? 50 : 10;
+      pingpong(rank, peer, m, 3); // warm-up: connections, pages
+      const double t = pingpong(rank, peer, m, reps);
+      if (rank != 0) continue;
+      f.samples.push_back({{"peer", peer}, {"bytes", m}, {"one_way_s", t}});
+      if (m <= 100)
+        shorts.push_back(t);
+      else {
+        xs.push_back(double(m));
+        ys.push_back(t);
+      }
+    }
+  if (rank != 0) return f;
+  double mx = 0, my = 0;
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    mx += xs[i];
+    my += ys[i];
+  }
+  mx /= double(xs.size());
+  my /= double(ys.size());
+  double sxy = 0, sxx = 0;
+  for (std::size_t i = 0; i < xs.size(); ++i) {
+    sxy += (xs[i] - mx) * (ys[i] - my);
+    sxx += (xs[i] - mx) * (xs[i] - mx);
+  }
+  f.per_byte_s = std::max(0.0, sxx > 0 ? sxy / sxx : 0.0);
+  f.long_s = std::max(0.0, my - f.per_byte_s * mx);
+  for (double s : shorts)
+    f.short_s += s / double(shorts.size());
+  return f;
+}
+
+// Seconds per call of fn, repeated for at least `min_s`.
+template <class F> double time_per_call(F&& fn, double min_s) {
+  int n = 0;
+  const auto t0 = Clock::now();
+  double el = 0;
+  do {
+    fn();
+    ++n;
+    el = std::chrono::duration<double>(Clock::now() - t0).count();
+  } while (el < min_s);
+  return el / n;
+}
+
+// Per-group multipliers of the prior table for this host's CPU.
+std::vector<double> measure_cpu(const ProbeOptions& o, nlohmann::json& log) {
+  const CostTable prior = prior_i386_costs();
+  const auto& groups = cost_groups();
+  const std::size_t G = groups.size();
+  auto priced = [&](const Counters& c) { // A_g: the group's operations at prior prices
+    CostTable p = prior;
+    nlohmann::json cj = c;
+    std::vector<double> a(G, 0.0);
+    for (std::size_t g = 0; g < G; ++g)
+      for (const auto& f : groups[g].fields)
+        for (auto& [id, v] : p.fields())
+          if (id == "cost_" + f) a[g] += cj[f].get<double>() * *v;
+    return a;
+  };
+  Matrix A;
+  std::vector<double> b;
+  struct Case {
+    const char* scene;
+    int size;
+  };
+  for (const Case& cs : {Case{"teapot", 64}, Case{"teapot", 256}, Case{"teapot", 768},
+                         Case{"bunny", 128}, Case{"bunny", 512}}) {
+    LoadOptions lo;
+    lo.width = lo.height = cs.size;
+    const Scene s = load_scene(o.root + "/scenes/" + cs.scene + ".json", lo);
+    Counters c;
+    const double t = time_per_call([&] { c = render_scene(s, 1).counters; }, o.seconds);
+    A.push_back(priced(c));
+    b.push_back(t);
+    log.push_back({{"case", std::string(cs.scene) + " " + std::to_string(cs.size)},
+                   {"seconds", t},
+                   {"counters", c}});
+  }
+  // Merge and packing by themselves: a full-buffer merge, and a memory copy.
+  {
+    Framebuffer x(512, RowSet::all(512), glm::vec3(0)), y(512, RowSet::all(512), glm::vec3(0));
+    for (std::size_t i = 0; i < y.depth().size(); ++i)
+      y.depth()[i] = float(i % 7) * 0.1f;
+    std::uint64_t ops = 0;
+    const double t = time_per_call([&] { ops = x.merge(y); }, o.seconds);
+    Counters c;
+    c.merge_ops = ops;
+    A.push_back(priced(c));
+    b.push_back(t);
+    log.push_back({{"case", "merge 512x512"}, {"seconds", t}});
+  }
+  {
+    std::vector<std::uint8_t> src(8u << 20, 1), dst(src.size());
+    const double t =
+        time_per_call([&] { std::memcpy(dst.data(), src.data(), src.size()); }, o.seconds);
+    Counters c;
+    c.bytes_packed = src.size();
+    A.push_back(priced(c));
+    b.push_back(t);
+    log.push_back({{"case", "memcpy 8 MiB"}, {"seconds", t}});
+  }
+  // Relative errors; a weak pull of every multiplier towards the single overall ratio.
+  double ta = 0, tb = 0;
+  for (std::size_t r = 0; r < A.size(); ++r) {
+    for (double v : A[r])
+      ta += v;
+    tb += b[r];
+  }
+  const double k0 = ta > 0 ? tb / ta : 1.0;
+  for (std::size_t r = 0; r < A.size(); ++r) {
+    for (double& v : A[r])
+      v /= b[r];
+    b[r] = 1.0;
+  }
+  for (std::size_t g = 0; g < G; ++g) {
+    std::vector<double> line(G, 0.0);
+    line[g] = 0.05 / k0;
+    A.push_back(line);
+    b.push_back(0.05);
+  }
+  return nnls(A, b);
+}
+
+std::string host_name() {
+  char buf[256] = {};
+  gethostname(buf, sizeof buf - 1);
+  return buf;
+}
+
+} // namespace
+
+nlohmann::json probe_cluster(const ProbeOptions& o) {
+  int rank = 0, size = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &size);
+  if (size < 2)
+    throw UsageError("probe measures the network between MPI processes: mpirun -np P zcube probe "
+                     "(P >= 2)");
+  const NetFit net = measure_network(rank, size);
+  nlohmann::json cpu_log = nlohmann::json::array();
+  const std::vector<double> k = measure_cpu(o, cpu_log);
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
+  const nlohmann::json mine = {
+      {"host", host_name()}, {"k", k}, {"cpu", cpu_log}, {"memory", double(pages) * double(page)}};
+  const std::string text = mine.dump();
+  const auto all = gather_to_root(Bytes(text.begin(), text.end()));
+  if (rank != 0) return nlohmann::json::object();
+
+  std::vector<double> kavg(k.size(), 0.0);
+  std::map<std::string, int> ranks_on;
+  std::map<std::string, double> mem_of;
+  nlohmann::json per_rank = nlohmann::json::array();
+  for (const auto& b : all) {
+    const auto j = nlohmann::json::parse(std::string(b.begin(), b.end()));
+    for (std::size_t g = 0; g < kavg.size(); ++g)
+      kavg[g] += j["k"][g].get<double>() / double(all.size());
+    ++ranks_on[j["host"]];
+    mem_of[j["host"]] = j["memory"];
+    per_rank.push_back(j);
+  }
+  double memory = 1e300;
+  for (const auto& [h, n] : ranks_on)
+    memory = std::min(memory, mem_of[h] / n);
+
+  MachineSpec spec = machine_spec("ipsc860");
+  spec.name = "cluster";
+  std::string hosts;
+  for (const auto& [h, n] : ranks_on)
+    hosts += (hosts.empty() ? "" : ", ") + h + " x" + std::to_string(n);
+  spec.description = "a cluster measured on " + hosts;
+  spec.generated_by = "`mpirun -np " + std::to_string(size) + " zcube probe`";
+  spec.memory_bytes = std::floor(memory);
+  spec.net.startup_short_s = net.short_s;
+  spec.net.startup_long_s = net.long_s;
+  spec.net.short_max_bytes = 100;
+  spec.net.per_byte_s = net.per_byte_s;
+  spec.net.per_hop_s = 0;
+  spec.net.switching = Switching::Circuit;
+  spec.net.host_startup_s = net.short_s;
+  spec.net.host_per_byte_s = net.per_byte_s;
+  spec.cost = scale_groups(prior_i386_costs(), kavg);
+  spec.cost_calibrated = true;
+  const Topology topo = (size & (size - 1)) == 0 ? Topology::Cube : Topology::Ring;
+  std::ofstream f(o.out);
+  f << platform_xml(spec, size, topo);
+  if (!f) throw InputError(o.out, 0, "cannot write the platform file");
+  return {{"network",
+           {{"startup_short_s", net.short_s},
+            {"startup_long_s", net.long_s},
+            {"per_byte_s", net.per_byte_s},
+            {"samples", net.samples}}},
+          {"cpu_group_scale", kavg},
+          {"ranks", per_rank},
+          {"memory_bytes_per_node", spec.memory_bytes},
+          {"topology", topology_name(topo)},
+          {"nodes", size}};
+}
+
+} // namespace zc

@@ -1,0 +1,29 @@
+#pragma once
+// `mpirun -np P zcube probe --out cluster.xml`: measures the machine the MPI processes run on and
+// writes a zcube platform of it, so `zcube run --machine cluster.xml` predicts it.
+//  - Network: ping-pong between rank 0 and every other rank over message sizes 0 B..1 MiB; the
+//    one-way time is half the best round trip of several. Short start-up = the mean one-way time
+//    of messages up to 100 B; long start-up and per-byte cost = least squares over the larger
+//    ones. Every pair is taken alike (a switched cluster: per-hop cost 0).
+//  - CPU: every rank times the real renderer (teapot and bunny at several sizes, with their exact
+//    operation counts), a frame-buffer merge and a memory copy, and fits one multiplier per cost
+//    group of the 80386 prior table (NNLS, pulled weakly towards a single overall speed-up);
+//    rank 0 averages the ranks.
+//  - Memory: the host's physical memory shared by the ranks on it.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace zc {
+
+struct ProbeOptions {
+  std::string root;     // source tree (scenes/)
+  std::string out;      // platform XML to write
+  double seconds = 0.2; // least time per CPU measurement
+};
+
+// Call on every rank inside an MpiSession; rank 0 writes the file and returns the measurements
+// (other ranks return an empty object).
+nlohmann::json probe_cluster(const ProbeOptions& opt);
+
+} // namespace zc
