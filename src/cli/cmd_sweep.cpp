@@ -10,6 +10,12 @@
 #include "repro/sweep.hpp"
 #include "sim/batch.hpp"
 #include "util/error.hpp"
+#ifdef ZCUBE_HAVE_MPI
+#include <optional>
+
+#include "mpi/mpi_session.hpp"
+#include "mpi/sharded_batch.hpp"
+#endif
 
 namespace zc::cli {
 
@@ -39,9 +45,9 @@ static int cmd_sweep(std::vector<std::string> args) {
   bool no_plot = false;
   app.add_option("--out", out, "directory for sweep.csv, sweep.json, sweep.png")
       ->capture_default_str();
-  app.add_option("--jobs", jobs, "points at once")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  auto* jobs_opt = app.add_option("--jobs", jobs, "points at once (per rank under mpirun: 1)")
+                       ->check(CLI::PositiveNumber)
+                       ->capture_default_str();
   app.add_option("--plot-x", plot_x,
                  "flag on the plot's x axis (default: the first with several values)");
   app.add_option("--plot-y", plot_y, "column on the plot's y axis")->capture_default_str();
@@ -66,9 +72,33 @@ static int cmd_sweep(std::vector<std::string> args) {
       cfgs.push_back(*points[i].config);
       runnable.push_back(i);
     }
-  std::cerr << "sweep: " << points.size() << " points (" << points.size() - cfgs.size()
-            << " invalid), " << jobs << " at a time\n";
-  const auto ran = run_batch(cfgs, jobs, progress_printer("sweep"));
+#ifdef ZCUBE_HAVE_MPI
+  // Under mpirun: the points are shared among the ranks; rank 0 writes the files.
+  std::optional<MpiSession> mpi;
+  if (launched_by_mpirun()) {
+    mpi.emplace();
+    if (!jobs_opt->count()) jobs = 1; // the ranks already fill the cores
+  }
+  const bool root = !mpi || mpi->rank() == 0;
+  const int ranks = mpi ? mpi->size() : 1;
+#else
+  const bool root = true;
+  const int ranks = 1;
+#endif
+  if (root)
+    std::cerr << "sweep: " << points.size() << " points (" << points.size() - cfgs.size()
+              << " invalid), " << jobs << " at a time"
+              << (ranks > 1 ? " on each of " + std::to_string(ranks) + " MPI ranks" : "") << "\n";
+  std::vector<nlohmann::json> ran;
+#ifdef ZCUBE_HAVE_MPI
+  if (mpi) {
+    ran = run_batch_sharded(cfgs, jobs,
+                            root ? progress_printer("sweep (rank 0's share)")
+                                 : std::function<void(const BatchProgress&)>{});
+    if (!root) return 0;
+  } else
+#endif
+    ran = run_batch(cfgs, jobs, progress_printer("sweep"));
   std::vector<nlohmann::json> reports(points.size(), nlohmann::json::object());
   for (std::size_t k = 0; k < runnable.size(); ++k)
     reports[runnable[k]] = ran[k];

@@ -10,6 +10,8 @@ MpiSession::MpiSession() {
   int init = 0;
   MPI_Initialized(&init);
   if (!init) {
+    // Sharded sweeps fork simulation processes that never touch MPI: no warning for that.
+    setenv("OMPI_MCA_mpi_warn_on_fork", "0", 0);
     MPI_Init(nullptr, nullptr);
     owner_ = true;
   }

@@ -1,0 +1,110 @@
+#!/usr/bin/env bash
+# The MPI backend (issue 8), under mpirun on this machine (oversubscribed: P may exceed the cores).
+# usage: mpi_tests.sh ZCUBE MPIRUN SOURCE_DIR comm|images|sweep|probe
+set -u
+zcube=$1 mpirun=$2 src=$3 what=$4
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none
+export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_hwloc_base_binding_policy=none
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+bad() {
+  echo "FAIL $*"
+  fail=1
+}
+mpi() { # np args...
+  local np=$1
+  shift
+  "$mpirun" --oversubscribe -np "$np" "$zcube" "$@"
+}
+# A report of the MPI backend whose picture is the sequential renderer's.
+image_ok() { # name report
+  grep -q '"measured": true' "$2" || bad "$1: report not marked measured"
+  grep -q '"identical_to_sequential": true' "$2" || bad "$1: image differs from the sequential renderer's"
+}
+
+case $what in
+comm)
+  # The collective and FIFO self-test (algo/comm_check) the simulated tests also run.
+  for np in 1 2 4; do
+    mpi $np run --backend mpi --algorithm comm-check --report "$tmp/c$np.json" >"$tmp/out" 2>&1 ||
+      bad "comm-check P=$np: $(tail -3 "$tmp/out")"
+    grep -q '"status": "ok"' "$tmp/c$np.json" 2>/dev/null || bad "comm-check P=$np: no ok report"
+    [ "$fail" = 0 ] && echo "ok   comm-check P=$np"
+  done
+  ;;
+images)
+  # Each algorithm family gives the sequential image (P = 2 and 4; Blazek's host is one more rank).
+  run() { # name np args...
+    local name=$1 np=$2
+    shift 2
+    if mpi "$np" run --backend mpi "$@" --report "$tmp/r.json" >"$tmp/out" 2>&1; then
+      image_ok "$name" "$tmp/r.json" && echo "ok   $name"
+    else
+      bad "$name: $(tail -3 "$tmp/out")"
+    fi
+  }
+  run sequential 1 --algorithm sequential --size 96x96
+  for p in 2 4; do
+    run "elastic P=$p" $p --algorithm elastic --size 128x128
+    run "elastic request gather P=$p" $p --algorithm elastic --size 128x128 --vertices request --output gather
+    for a in pair-rs zbuf-exc aapc-hbp; do
+      run "$a P=$p" $p --algorithm $a --scene "$src/scenes/kurc/1pot.json" --size 160x160
+    done
+    for a in host-initiated node-initiated object-forwarding host-broadcast; do
+      run "$a P=$p" $((p + 1)) --algorithm $a --scene "$src/scenes/blazek_fig9.sdl" --size 96x96
+    done
+  done
+  # Blazek's methods need their host rank: one process is a clear one-line error.
+  if mpi 1 run --backend mpi --algorithm node-initiated --scene "$src/scenes/blazek_fig9.sdl" \
+    >"$tmp/out" 2>"$tmp/err"; then
+    bad "node-initiated on 1 process should fail"
+  else
+    grep -q "host computer" "$tmp/err" || bad "node-initiated on 1 process: $(cat "$tmp/err")"
+  fi
+  ;;
+sweep)
+  # A sweep sharded over 2 ranks gives the rows of a local one (wall times aside), failed
+  # points included.
+  args=(--nodes 1,2,3,4 --algorithm pair-rs,aapc-hbp --scene "$src/scenes/kurc/1pot.json"
+    --size 160x160 --latency 10us,275us --no-plot)
+  "$zcube" sweep "${args[@]}" --out "$tmp/local" >/dev/null 2>&1
+  mpi 2 sweep "${args[@]}" --out "$tmp/sharded" >/dev/null 2>&1
+  strip() { /usr/bin/python3 -c "import csv,sys
+for r in csv.DictReader(open(sys.argv[1])):
+    r.pop('wall_s'); print(sorted(r.items()))" "$1"; }
+  [ -s "$tmp/local/sweep.csv" ] || bad "local sweep wrote nothing"
+  [ -s "$tmp/sharded/sweep.csv" ] || bad "sharded sweep wrote nothing"
+  if [ "$fail" = 0 ]; then
+    diff <(strip "$tmp/local/sweep.csv") <(strip "$tmp/sharded/sweep.csv") >"$tmp/diff" ||
+      bad "sharded rows differ: $(head -5 "$tmp/diff")"
+    n=$(grep -c ",error," "$tmp/sharded/sweep.csv")
+    [ "$n" = 4 ] || bad "expected the 4 three-node points to fail, got $n"
+    [ "$(wc -l <"$tmp/sharded/sweep.csv")" = 17 ] || bad "expected 16 rows"
+    [ "$fail" = 0 ] && echo "ok   sharded sweep = local sweep (16 points, 4 failed)"
+  fi
+  ;;
+probe)
+  # probe writes a platform the simulator loads; compare prints the table and rejects bad files.
+  mpi 2 probe --out "$tmp/cluster.xml" --seconds 0.05 >"$tmp/out" 2>&1 || bad "probe: $(tail -3 "$tmp/out")"
+  "$zcube" run --machine "$tmp/cluster.xml" --fidelity analytic --algorithm elastic --size 128x128 \
+    --report "$tmp/pred.json" >"$tmp/out" 2>&1 || bad "run on the probed platform: $(tail -2 "$tmp/out")"
+  mpi 2 run --backend mpi --algorithm elastic --size 128x128 --report "$tmp/meas.json" >/dev/null 2>&1 ||
+    bad "measured run failed"
+  "$zcube" compare --measured "$tmp/meas.json" --predicted "$tmp/pred.json" >"$tmp/cmp" 2>&1 ||
+    bad "compare: $(cat "$tmp/cmp")"
+  grep -q "^| zbuffer |" "$tmp/cmp" && grep -q "^| total |" "$tmp/cmp" || bad "compare table: $(cat "$tmp/cmp")"
+  echo '{"phases": 1}' >"$tmp/bad.json"
+  "$zcube" compare --measured "$tmp/bad.json" --predicted "$tmp/pred.json" >/dev/null 2>"$tmp/err"
+  rc=$?
+  { [ $rc = 2 ] && [ "$(wc -l <"$tmp/err")" = 1 ] && grep -q "bad.json" "$tmp/err"; } ||
+    bad "compare of a bad file: exit $rc, $(cat "$tmp/err")"
+  [ "$fail" = 0 ] && echo "ok   probe -> platform -> prediction; compare"
+  ;;
+*)
+  echo "unknown test group $what"
+  exit 2
+  ;;
+esac
+exit $fail
