@@ -6,6 +6,7 @@
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
 #include "cli/paths.hpp"
+#include "repro/sweep.hpp"
 #include "util/error.hpp"
 #ifdef ZCUBE_HAVE_MPI
 #include "mpi/mpi_session.hpp"
@@ -22,6 +23,9 @@ static int cmd_probe(std::vector<std::string> args) {
   double seconds = 0.2;
   app.add_option("--out", out, "platform XML to write")->capture_default_str();
   app.add_option("--json", json, "also write the measurements as JSON");
+  std::string nodes;
+  app.add_option("--nodes", nodes,
+                 "write platforms for these node counts (comma-separated; default: the ranks)");
   app.add_option("--seconds", seconds, "least time per CPU measurement")->capture_default_str();
   if (int rc = parse(app, args); rc >= 0) return rc;
 #ifdef ZCUBE_HAVE_MPI
@@ -30,6 +34,14 @@ static int cmd_probe(std::vector<std::string> args) {
   o.root = source_root();
   o.out = out;
   o.seconds = seconds;
+  if (!nodes.empty())
+    for (const auto& v : split_list(nodes, "nodes")) {
+      try {
+        o.nodes.push_back(std::stoi(v));
+      } catch (const std::exception&) {
+        throw UsageError("--nodes '" + v + "': expected a node count");
+      }
+    }
   const auto m = probe_cluster(o);
   if (mpi.rank() != 0) return 0;
   if (!json.empty()) std::ofstream(json) << m.dump(1) << "\n";
@@ -41,12 +53,15 @@ static int cmd_probe(std::vector<std::string> args) {
             << "CPU: multipliers of the 80386 prior table per cost group:";
   for (const auto& k : m["cpu_group_scale"])
     std::cout << " " << k.get<double>();
-  std::cout << "\nwrote " << out << " (" << m["nodes"] << " nodes, "
-            << m["topology"].get<std::string>() << "): zcube run --machine " << out
-            << " --fidelity analytic ...\n";
+  std::cout << "\n";
+  for (const auto& p : m["platforms"])
+    std::cout << "wrote " << p["file"].get<std::string>() << " (" << p["nodes"] << " nodes, "
+              << p["topology"].get<std::string>() << "): zcube run --machine "
+              << p["file"].get<std::string>() << " --fidelity analytic ...\n";
   return 0;
 #else
   (void)out;
+  (void)nodes;
   throw UsageError("probe: this zcube was built without MPI (scripts/setup.sh installs "
                    "libopenmpi-dev; then rebuild)");
 #endif

@@ -45,9 +45,10 @@ static int cmd_sweep(std::vector<std::string> args) {
   bool no_plot = false;
   app.add_option("--out", out, "directory for sweep.csv, sweep.json, sweep.png")
       ->capture_default_str();
-  auto* jobs_opt = app.add_option("--jobs", jobs, "points at once (per rank under mpirun: 1)")
-                       ->check(CLI::PositiveNumber)
-                       ->capture_default_str();
+  [[maybe_unused]] auto* jobs_opt =
+      app.add_option("--jobs", jobs, "points at once (per rank under mpirun: 1)")
+          ->check(CLI::PositiveNumber)
+          ->capture_default_str();
   app.add_option("--plot-x", plot_x,
                  "flag on the plot's x axis (default: the first with several values)");
   app.add_option("--plot-y", plot_y, "column on the plot's y axis")->capture_default_str();

@@ -186,6 +186,17 @@ std::string host_name() {
 
 } // namespace
 
+std::vector<std::string> probe_outputs(const ProbeOptions& o, int ranks) {
+  if (o.nodes.size() <= 1) return {o.out};
+  std::string stem = o.out, ext = ".xml";
+  if (stem.ends_with(".xml")) stem.resize(stem.size() - 4);
+  std::vector<std::string> v;
+  for (int p : o.nodes)
+    v.push_back(stem + "-" + std::to_string(p) + ext);
+  (void)ranks;
+  return v;
+}
+
 nlohmann::json probe_cluster(const ProbeOptions& o) {
   int rank = 0, size = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -193,6 +204,8 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
   if (size < 2)
     throw UsageError("probe measures the network between MPI processes: mpirun -np P zcube probe "
                      "(P >= 2)");
+  for (int p : o.nodes)
+    if (p < 1) throw UsageError("probe --nodes: node counts must be positive");
   const NetFit net = measure_network(rank, size);
   nlohmann::json cpu_log = nlohmann::json::array();
   const std::vector<double> k = measure_cpu(o, cpu_log);
@@ -237,10 +250,18 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
   spec.net.host_per_byte_s = net.per_byte_s;
   spec.cost = scale_groups(prior_i386_costs(), kavg);
   spec.cost_calibrated = true;
-  const Topology topo = (size & (size - 1)) == 0 ? Topology::Cube : Topology::Ring;
-  std::ofstream f(o.out);
-  f << platform_xml(spec, size, topo);
-  if (!f) throw InputError(o.out, 0, "cannot write the platform file");
+  const auto outs = probe_outputs(o, size);
+  std::vector<int> counts = o.nodes.empty() ? std::vector<int>{size} : o.nodes;
+  nlohmann::json written = nlohmann::json::array();
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    const int P = counts[i];
+    // A power of two is a hypercube (per-hop cost 0, so only contention differs), else a ring.
+    const Topology topo = (P & (P - 1)) == 0 ? Topology::Cube : Topology::Ring;
+    std::ofstream f(outs[i]);
+    f << platform_xml(spec, P, topo);
+    if (!f) throw InputError(outs[i], 0, "cannot write the platform file");
+    written.push_back({{"file", outs[i]}, {"nodes", P}, {"topology", topology_name(topo)}});
+  }
   return {{"network",
            {{"startup_short_s", net.short_s},
             {"startup_long_s", net.long_s},
@@ -249,8 +270,8 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
           {"cpu_group_scale", kavg},
           {"ranks", per_rank},
           {"memory_bytes_per_node", spec.memory_bytes},
-          {"topology", topology_name(topo)},
-          {"nodes", size}};
+          {"platforms", written},
+          {"ranks_measured", size}};
 }
 
 } // namespace zc

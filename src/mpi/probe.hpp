@@ -11,19 +11,23 @@
 //    rank 0 averages the ranks.
 //  - Memory: the host's physical memory shared by the ranks on it.
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
 namespace zc {
 
 struct ProbeOptions {
-  std::string root;     // source tree (scenes/)
-  std::string out;      // platform XML to write
-  double seconds = 0.2; // least time per CPU measurement
+  std::string root;       // source tree (scenes/)
+  std::string out;        // platform XML to write (with several node counts: <stem>-<P>.xml each)
+  std::vector<int> nodes; // node counts to write platforms for (empty: the number of ranks)
+  double seconds = 0.2;   // least time per CPU measurement
 };
 
 // Call on every rank inside an MpiSession; rank 0 writes the file and returns the measurements
 // (other ranks return an empty object).
+// The files written, for `nodes` = {1, 2, 4} and out = c.xml: c-1.xml, c-2.xml, c-4.xml.
+std::vector<std::string> probe_outputs(const ProbeOptions& opt, int ranks);
 nlohmann::json probe_cluster(const ProbeOptions& opt);
 
 } // namespace zc
