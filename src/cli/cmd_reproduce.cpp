@@ -16,8 +16,8 @@ static int cmd_reproduce(std::vector<std::string> args) {
   o.jobs = default_jobs();
   std::string which = "all";
   bool no_plots = false;
-  app.add_option("paper", which, "kurc, charles, blazek or all")
-      ->check(CLI::IsMember({"kurc", "charles", "blazek", "all"}))
+  app.add_option("paper", which, "kurc, charles (charles95), blazek (blazek91) or all")
+      ->check(CLI::IsMember({"kurc", "charles", "blazek", "charles95", "blazek91", "all"}))
       ->capture_default_str();
   app.add_option("--out", o.out, "output directory")->capture_default_str();
   app.add_option("--jobs", o.jobs, "simulations at once (each its own process)")
@@ -27,6 +27,8 @@ static int cmd_reproduce(std::vector<std::string> args) {
   app.add_flag("--no-plots", no_plots, "skip the PNG plots");
   if (int rc = parse(app, args); rc >= 0) return rc;
   o.plots = !no_plots;
+  if (which == "charles95") which = "charles"; // the names of DESIGN §3
+  if (which == "blazek91") which = "blazek";
   if (which != "all") o.papers = {which};
   return reproduce(o);
 }
