@@ -41,7 +41,10 @@ std::string top_readme(const ReproduceOptions& o, double wall_s, std::size_t poi
          "elastic z-buffer, hypercube and ring; Table 1 |\n"
          "| [blazek/](blazek/README.md) | Blazek 1991 | speed-up and efficiency of the four "
          "decompositions (the committed copy is `zcube reproduce blazek --full`: 1..2048 "
-         "spheres, about 12 minutes) |\n\n"
+         "spheres, about 12 minutes) |\n"
+         "| [mpi/](mpi/README.md) | (this machine) | the same algorithms on MPI processes, measured "
+         "against the prediction on the platform `zcube probe` wrote (scripts/mpi_vs_model.sh) "
+         "|\n\n"
          "This run: " +
          std::to_string(points) + " simulations in " + fixed(wall_s, 1) + " s of host wall time (" +
          std::to_string(o.jobs) +
