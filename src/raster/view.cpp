@@ -22,7 +22,9 @@ ProjectedVertex View::project(const Vertex& v) const {
   return p;
 }
 
-View make_view(const Scene& scene) { return make_view(scene, scene.camera); }
+View make_view(const Scene& scene) {
+  return make_view(scene, scene.camera);
+}
 
 View make_view(const Scene& scene, const Camera& camera) {
   View v;
@@ -30,8 +32,7 @@ View make_view(const Scene& scene, const Camera& camera) {
   v.height = scene.height;
   resolve_clip_planes(camera, scene_bounds(scene), v.znear, v.zfar);
   const double aspect = static_cast<double>(scene.width) / std::max(1, scene.height);
-  v.view_proj =
-      projection_matrix(camera, aspect, v.znear, v.zfar) * view_matrix(camera);
+  v.view_proj = projection_matrix(camera, aspect, v.znear, v.zfar) * view_matrix(camera);
   v.ambient = scene.ambient;
   for (const auto& l : scene.lights) {
     const float len = glm::length(l.direction);

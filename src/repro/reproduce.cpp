@@ -42,7 +42,8 @@ std::string top_readme(const ReproduceOptions& o, double wall_s, std::size_t poi
          "| [blazek/](blazek/README.md) | Blazek 1991 | speed-up and efficiency of the four "
          "decompositions (the committed copy is `zcube reproduce blazek --full`: 1..2048 "
          "spheres, about 12 minutes) |\n"
-         "| [mpi/](mpi/README.md) | (this machine) | the same algorithms on MPI processes, measured "
+         "| [mpi/](mpi/README.md) | (this machine) | the same algorithms on MPI processes, "
+         "measured "
          "against the prediction on the platform `zcube probe` wrote (scripts/mpi_vs_model.sh) "
          "|\n\n"
          "This run: " +

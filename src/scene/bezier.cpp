@@ -4,8 +4,8 @@
 #include <map>
 #include <mutex>
 
-#include "util/error.hpp"
 #include "scene/text.hpp"
+#include "util/error.hpp"
 
 namespace zc {
 

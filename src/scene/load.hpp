@@ -1,6 +1,7 @@
 #pragma once
 // Scene loading: one entry point for every input format zcube reads.
-//   *.json            JSON scene (camera, image, lights, objects: meshes, Bezier patches, primitives)
+//   *.json            JSON scene (camera, image, lights, objects: meshes, Bezier patches,
+//   primitives)
 //   *.obj             bare mesh (with its MTL and map_Kd textures), framed by a default camera
 //   *.bpt, teaset     Newell Bezier patches, framed by a default camera
 //   anything else     Blazek's flat scene description language (thesis ch. IV, Figure 9)
@@ -12,7 +13,7 @@
 namespace zc {
 
 struct LoadOptions {
-  int width = 0;  // > 0 overrides the scene's image size
+  int width = 0; // > 0 overrides the scene's image size
   int height = 0;
 };
 

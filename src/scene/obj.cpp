@@ -8,9 +8,9 @@
 
 #include <tiny_obj_loader.h>
 
-#include "util/error.hpp"
 #include "scene/loaders.hpp"
 #include "scene/text.hpp"
+#include "util/error.hpp"
 
 namespace zc {
 

@@ -53,8 +53,9 @@ struct Triangle {
 
 // A primitive as a scene description states it (Blazek ch. IV): kept so that methods which ship
 // descriptions instead of polygons (node initiated, object forwarding) can re-tessellate it on a
-// node. Tessellating `desc` yields exactly triangles [first_triangle, first_triangle+triangle_count)
-// and vertices [first_vertex, first_vertex+vertex_count) of the scene, bit for bit.
+// node. Tessellating `desc` yields exactly triangles [first_triangle,
+// first_triangle+triangle_count) and vertices [first_vertex, first_vertex+vertex_count) of the
+// scene, bit for bit.
 struct ObjectDesc {
   std::string kind; // "sphere", "cube", "cone", "cylinder", "spheroid", "bezier", "mesh"
   std::string text; // canonical one-line description (what the host would send), ~100 bytes

@@ -21,10 +21,10 @@
 #include "geometry/camera.hpp"
 #include "scene/bezier.hpp"
 #include "scene/colors.hpp"
-#include "util/error.hpp"
 #include "scene/loaders.hpp"
 #include "scene/prng.hpp"
 #include "scene/text.hpp"
+#include "util/error.hpp"
 
 #include <filesystem>
 #include <numbers>

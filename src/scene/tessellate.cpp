@@ -3,9 +3,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "scene/bezier.hpp"
-#include "util/error.hpp"
 #include "scene/primitives.hpp"
 #include "scene/text.hpp"
+#include "util/error.hpp"
 
 namespace zc {
 

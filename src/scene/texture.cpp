@@ -4,8 +4,8 @@
 
 #include <OpenImageIO/imageio.h>
 
-#include "util/error.hpp"
 #include "scene/loaders.hpp"
+#include "util/error.hpp"
 
 namespace zc {
 
