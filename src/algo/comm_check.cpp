@@ -88,6 +88,13 @@ void comm_check_node(NodeContext& ctx) {
     for (auto& h : hs)
       h->wait();
   }
+  // Two nodes that both send (blocking) before they receive: a send never waits for its
+  // receiver, even for a message too large for a transport's eager buffers.
+  if (const int partner = r ^ 1; partner < P && P > 1) {
+    constexpr int kTagSwap = 902;
+    c.send(partner, kTagSwap, block(r, 1 << 20));
+    check(c.recv(partner, kTagSwap) == block(partner, 1 << 20), "crossing blocking sends of 1 MiB");
+  }
   coll::barrier(c);
   ctx.metrics()["comm_check_failures"] = failures;
   if (!failures.empty())

@@ -17,6 +17,11 @@ int byte_count(const Bytes& b) {
 
 class MpiSend final : public SendRequest {
 public:
+  bool done() {
+    int flag = 1;
+    if (req_ != MPI_REQUEST_NULL) MPI_Test(&req_, &flag, MPI_STATUS_IGNORE);
+    return flag != 0;
+  }
   MpiSend(Bytes data, int dst, int tag, MPI_Comm comm) : data_(std::move(data)) {
     MPI_Isend(data_.data(), byte_count(data_), MPI_BYTE, dst, tag, comm, &req_);
   }
@@ -53,12 +58,20 @@ void MpiComm::check_peer(int peer, int tag) const {
 }
 
 void MpiComm::send(int dst, int tag, Bytes data) {
-  check_peer(dst, tag);
   const double t = MPI_Wtime();
-  MPI_Send(data.data(), byte_count(data), MPI_BYTE, dst, tag, world_);
+  in_flight_.push_back(isend(dst, tag, std::move(data)));
+  reap();
   stats_.comm_s += MPI_Wtime() - t;
-  stats_.bytes_sent += data.size();
-  ++stats_.messages;
+}
+
+void MpiComm::reap() {
+  std::erase_if(in_flight_, [](SendHandle& h) { return static_cast<MpiSend&>(*h).done(); });
+}
+
+void MpiComm::flush() {
+  for (auto& h : in_flight_)
+    h->wait();
+  in_flight_.clear();
 }
 
 SendHandle MpiComm::isend(int dst, int tag, Bytes data) {
@@ -77,6 +90,7 @@ Bytes MpiComm::recv(int src, int tag, int* from) {
   MPI_Get_count(&st, MPI_BYTE, &n);
   Bytes b(static_cast<std::size_t>(n));
   MPI_Recv(b.data(), n, MPI_BYTE, st.MPI_SOURCE, tag, world_, MPI_STATUS_IGNORE);
+  reap();
   stats_.comm_s += MPI_Wtime() - t;
   if (from) *from = st.MPI_SOURCE;
   return b;

@@ -5,6 +5,8 @@
 // the order the Comm interface promises. now() is wall-clock seconds since a common barrier.
 #include <mpi.h>
 
+#include <vector>
+
 #include "comm/comm.hpp"
 #include "sim/report.hpp"
 
@@ -25,10 +27,18 @@ public:
 
   // Restarts the clock: every rank calls it after a barrier, so phase times share one origin.
   void reset_clock() { t0_ = MPI_Wtime(); }
+  // Completes every send still in flight (before the run's results are gathered).
+  void flush();
+  ~MpiComm() override { flush(); }
 
 private:
   void check_peer(int peer, int tag) const;
+  void reap(); // drops the sends that have completed
 
+  // Blocking sends are posted as MPI_Isend and kept here until complete: like the simulator's
+  // eager mailboxes, a send never waits for its receiver, so two nodes that send to each other
+  // before receiving cannot deadlock on MPI's rendezvous protocol for large messages.
+  std::vector<SendHandle> in_flight_;
   MPI_Comm world_;
   int rank_ = 0, world_size_ = 0, nodes_ = 0, tag_ub_ = 32767;
   Topology topology_;

@@ -114,6 +114,7 @@ SimResult run_mpi(const SimConfig& cfg) {
   } catch (const std::exception& ex) {
     abort_job(rank, ex.what());
   }
+  comm.flush();
   stats.finish_s = comm.now();
   const double total = max_over_ranks(stats.finish_s);
 

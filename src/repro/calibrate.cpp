@@ -436,9 +436,10 @@ void write_readme(const nlohmann::json& fit, const std::string& path) {
        << fmt(v.get<double>() * 1e6) << " | " << fmt(fit["tables"]["i860"][f].get<double>() * 1e6)
        << " |\n";
   const auto& e = fit["rms_rel_error"];
-  md << "\nRMS relative error: Kurc Table 2 " << pct(e["kurc_prior"].get<double>()) << " (prior) "
-     << "-> " << pct(e["kurc_fitted"].get<double>()) << "; Charles speed-ups "
-     << pct(e["charles_prior"].get<double>()) << " -> " << pct(e["charles_fitted"].get<double>())
+  auto rms = [](double v) { return fmt(100 * v, 3) + " %"; };
+  md << "\nRMS relative error: Kurc Table 2 " << rms(e["kurc_prior"].get<double>()) << " (prior) "
+     << "-> " << rms(e["kurc_fitted"].get<double>()) << "; Charles speed-ups "
+     << rms(e["charles_prior"].get<double>()) << " -> " << rms(e["charles_fitted"].get<double>())
      << ".\n\n## Reading the fit\n\n"
         "- Costs are positive by construction (NNLS), and the i860 machines use the 80386 table "
         "divided by one ratio, so the three machine models stay consistent.\n"
