@@ -1,21 +1,14 @@
 #include "repro/compare.hpp"
 
-#include <fstream>
 #include <map>
 
+#include "repro/json_file.hpp"
 #include "util/error.hpp"
 
 namespace zc {
 
 nlohmann::json read_report(const std::string& path) {
-  std::ifstream f(path);
-  if (!f) throw InputError(path, 0, "cannot open the report");
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(f);
-  } catch (const nlohmann::json::parse_error& ex) {
-    throw InputError(path, 0, std::string("not JSON: ") + ex.what());
-  }
+  const nlohmann::json j = read_json_file(path, "the report");
   if (!j.is_object() || !j.contains("virtual_time_s") || !j["virtual_time_s"].is_number() ||
       !j.contains("phases") || !j["phases"].is_array())
     throw InputError(path, 0, "not a zcube report (no virtual_time_s or phases)");

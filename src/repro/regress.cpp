@@ -2,9 +2,9 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <set>
 
+#include "repro/json_file.hpp"
 #include "repro/sweep.hpp"
 #include "repro/table.hpp"
 #include "sim/batch.hpp"
@@ -13,14 +13,7 @@
 namespace zc {
 
 std::vector<RegressRun> read_regress_runs(const std::string& path) {
-  std::ifstream f(path);
-  if (!f) throw InputError(path, 0, "cannot open the runs file");
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(f);
-  } catch (const nlohmann::json::parse_error& ex) {
-    throw InputError(path, 0, std::string("not JSON: ") + ex.what());
-  }
+  const nlohmann::json j = read_json_file(path, "the runs file");
   if (!j.contains("runs") || !j["runs"].is_array())
     throw InputError(path, 0, "expected {\"runs\": [...]}");
   std::vector<RegressRun> runs;
@@ -137,12 +130,7 @@ std::map<std::string, nlohmann::json> read_report_dir(const std::string& dir) {
   for (const auto& e : std::filesystem::directory_iterator(dir)) {
     const auto p = e.path();
     if (p.extension() != ".json" || p.filename() == "runs.json") continue;
-    std::ifstream f(p);
-    try {
-      out[p.stem().string()] = nlohmann::json::parse(f);
-    } catch (const nlohmann::json::parse_error& ex) {
-      throw InputError(p.string(), 0, std::string("not JSON: ") + ex.what());
-    }
+    out[p.stem().string()] = read_json_file(p.string(), "a report");
   }
   return out;
 }
