@@ -50,10 +50,12 @@ static int cmd_probe(std::vector<std::string> args) {
             << n["startup_short_s"].get<double>() * 1e6 << " us (short), "
             << n["startup_long_s"].get<double>() * 1e6 << " us (long), "
             << 1e-6 / std::max(n["per_byte_s"].get<double>(), 1e-300) << " MB/s\n"
-            << "CPU: multipliers of the 80386 prior table per cost group:";
-  for (const auto& k : m["cpu_group_scale"])
-    std::cout << " " << k.get<double>();
-  std::cout << "\n";
+            << "CPU (ns): vertex " << m["cost"]["cost_vertices_transformed"].get<double>() * 1e9
+            << ", triangle set-up " << m["cost"]["cost_triangles_setup"].get<double>() * 1e9
+            << ", span " << m["cost"]["cost_spans"].get<double>() * 1e9 << ", fragment "
+            << m["cost"]["cost_pixels_generated"].get<double>() * 1e9 << ", merge "
+            << m["cost"]["cost_merge_ops"].get<double>() * 1e9 << ", byte copied "
+            << m["cost"]["cost_bytes_packed"].get<double>() * 1e9 << "\n";
   for (const auto& p : m["platforms"])
     std::cout << "wrote " << p["file"].get<std::string>() << " (" << p["nodes"] << " nodes, "
               << p["topology"].get<std::string>() << "): zcube run --machine "

@@ -52,8 +52,12 @@ const std::vector<CostGroup>& cost_groups() {
 }
 
 CostTable scale_groups(const CostTable& t, const std::vector<double>& scale) {
+  return scale_groups(t, cost_groups(), scale);
+}
+
+CostTable scale_groups(const CostTable& t, const std::vector<CostGroup>& groups,
+                       const std::vector<double>& scale) {
   CostTable out = t;
-  const auto& groups = cost_groups();
   for (auto& [id, v] : out.fields())
     for (std::size_t g = 0; g < groups.size() && g < scale.size(); ++g)
       for (const auto& f : groups[g].fields)

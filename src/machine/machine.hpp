@@ -65,8 +65,10 @@ struct CostGroup {
   std::vector<std::string> fields; // Counters field names
 };
 const std::vector<CostGroup>& cost_groups();
-// Multiplies every field of group g by scale[g].
+// Multiplies every field of group g by scale[g] (the calibration's groups, or others).
 CostTable scale_groups(const CostTable& t, const std::vector<double>& scale);
+CostTable scale_groups(const CostTable& t, const std::vector<CostGroup>& groups,
+                       const std::vector<double>& scale);
 // The placeholder table the calibration starts from: compiled C on a 16 MHz 80386 + 80387 node.
 CostTable prior_i386_costs();
 // The calibrated tables (calibrated_costs.hpp): the iPSC/2's 80386, and the i860 of the iPSC/860

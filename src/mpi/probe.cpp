@@ -99,10 +99,30 @@ template <class F> double time_per_call(F&& fn, double min_s) {
   return el / n;
 }
 
-// Per-group multipliers of the prior table for this host's CPU.
-std::vector<double> measure_cpu(const ProbeOptions& o, nlohmann::json& log) {
+// The probe's own grouping of the cost fields, finer than the calibration's where a kernel can
+// time a field by itself (the vertex transform apart from the triangle set-up).
+const std::vector<CostGroup>& probe_groups() {
+  static const std::vector<CostGroup> g = {
+      {"vertex", {"vertices_transformed"}},
+      {"triangle",
+       {"triangles_in", "triangles_culled", "triangles_clipped", "triangles_setup",
+        "triangles_estimated", "triangles_tessellated"}},
+      {"spans", {"spans", "rows_scanned"}},
+      {"pixels",
+       {"pixels_generated", "pixels_tested", "pixels_written", "pixels_final", "texels_fetched"}},
+      {"clear", {"pixels_cleared"}},
+      {"merge", {"merge_ops"}},
+      {"packing", {"bytes_packed"}}};
+  return g;
+}
+
+// This host's cost table: per probe group, a multiplier of the prior 80386 table, fitted (NNLS on
+// relative errors, pulled weakly towards one overall ratio) to timed kernels whose operations are
+// counted exactly: vertex transforms alone, triangle set-up alone, whole renders, a clear, a
+// merge and a memory copy.
+CostTable measure_cpu(const ProbeOptions& o, nlohmann::json& log) {
   const CostTable prior = prior_i386_costs();
-  const auto& groups = cost_groups();
+  const auto& groups = probe_groups();
   const std::size_t G = groups.size();
   auto priced = [&](const Counters& c) { // A_g: the group's operations at prior prices
     CostTable p = prior;
@@ -116,6 +136,11 @@ std::vector<double> measure_cpu(const ProbeOptions& o, nlohmann::json& log) {
   };
   Matrix A;
   std::vector<double> b;
+  auto add = [&](const std::string& what, const Counters& c, double t) {
+    A.push_back(priced(c));
+    b.push_back(t);
+    log.push_back({{"case", what}, {"seconds", t}, {"counters", c}});
+  };
   struct Case {
     const char* scene;
     int size;
@@ -125,36 +150,53 @@ std::vector<double> measure_cpu(const ProbeOptions& o, nlohmann::json& log) {
     LoadOptions lo;
     lo.width = lo.height = cs.size;
     const Scene s = load_scene(o.root + "/scenes/" + cs.scene + ".json", lo);
+    const std::string name = std::string(cs.scene) + " " + std::to_string(cs.size);
     Counters c;
-    const double t = time_per_call([&] { c = render_scene(s, 1).counters; }, o.seconds);
-    A.push_back(priced(c));
-    b.push_back(t);
-    log.push_back({{"case", std::string(cs.scene) + " " + std::to_string(cs.size)},
-                   {"seconds", t},
-                   {"counters", c}});
+    add("render " + name, c, time_per_call([&] { c = render_scene(s, 1).counters; }, o.seconds));
+    if (cs.size != 256 && cs.size != 512) continue;
+    // The geometry kernels by themselves on this scene.
+    const NodeRenderer nr(s);
+    std::vector<ProjectedVertex> pv(s.vertices.size());
+    Counters cv;
+    add("project " + name, cv,
+        time_per_call(
+            [&] {
+              cv = Counters{};
+              for (std::size_t i = 0; i < pv.size(); ++i)
+                pv[i] = nr.project(s.vertices[i], cv);
+            },
+            o.seconds));
+    TriangleBatch batch;
+    Counters ct;
+    add("set-up " + name, ct,
+        time_per_call(
+            [&] {
+              ct = Counters{};
+              for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+                const Triangle& t = s.triangles[i];
+                const ProjectedVertex* p3[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
+                batch.clear();
+                nr.setup(std::uint32_t(i), t, p3, nullptr, batch, ct);
+              }
+            },
+            o.seconds));
   }
-  // Merge and packing by themselves: a full-buffer merge, and a memory copy.
   {
-    Framebuffer x(512, RowSet::all(512), glm::vec3(0)), y(512, RowSet::all(512), glm::vec3(0));
+    Framebuffer x(1024, RowSet::all(1024), glm::vec3(0)), y(1024, RowSet::all(1024), glm::vec3(0));
+    Counters cc;
+    cc.pixels_cleared = x.pixel_count();
+    add("clear 1024x1024", cc, time_per_call([&] { x.clear(glm::vec3(0.5f)); }, o.seconds));
     for (std::size_t i = 0; i < y.depth().size(); ++i)
       y.depth()[i] = float(i % 7) * 0.1f;
-    std::uint64_t ops = 0;
-    const double t = time_per_call([&] { ops = x.merge(y); }, o.seconds);
-    Counters c;
-    c.merge_ops = ops;
-    A.push_back(priced(c));
-    b.push_back(t);
-    log.push_back({{"case", "merge 512x512"}, {"seconds", t}});
+    Counters cm;
+    add("merge 1024x1024", cm, time_per_call([&] { cm.merge_ops = x.merge(y); }, o.seconds));
   }
   {
     std::vector<std::uint8_t> src(8u << 20, 1), dst(src.size());
-    const double t =
-        time_per_call([&] { std::memcpy(dst.data(), src.data(), src.size()); }, o.seconds);
     Counters c;
     c.bytes_packed = src.size();
-    A.push_back(priced(c));
-    b.push_back(t);
-    log.push_back({{"case", "memcpy 8 MiB"}, {"seconds", t}});
+    add("memcpy 8 MiB", c,
+        time_per_call([&] { std::memcpy(dst.data(), src.data(), src.size()); }, o.seconds));
   }
   // Relative errors; a weak pull of every multiplier towards the single overall ratio.
   double ta = 0, tb = 0;
@@ -175,7 +217,7 @@ std::vector<double> measure_cpu(const ProbeOptions& o, nlohmann::json& log) {
     A.push_back(line);
     b.push_back(0.05);
   }
-  return nnls(A, b);
+  return scale_groups(prior, groups, nnls(A, b));
 }
 
 std::string host_name() {
@@ -208,22 +250,33 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
     if (p < 1) throw UsageError("probe --nodes: node counts must be positive");
   const NetFit net = measure_network(rank, size);
   nlohmann::json cpu_log = nlohmann::json::array();
-  const std::vector<double> k = measure_cpu(o, cpu_log);
+  const CostTable mine_cost = measure_cpu(o, cpu_log);
+  nlohmann::json cost_json = nlohmann::json::object();
+  {
+    CostTable t = mine_cost;
+    for (auto& [id, v] : t.fields())
+      cost_json[id] = *v;
+  }
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  const nlohmann::json mine = {
-      {"host", host_name()}, {"k", k}, {"cpu", cpu_log}, {"memory", double(pages) * double(page)}};
+  const nlohmann::json mine = {{"host", host_name()},
+                               {"cost", cost_json},
+                               {"cpu", cpu_log},
+                               {"memory", double(pages) * double(page)}};
   const std::string text = mine.dump();
   const auto all = gather_to_root(Bytes(text.begin(), text.end()));
   if (rank != 0) return nlohmann::json::object();
 
-  std::vector<double> kavg(k.size(), 0.0);
+  // The ranks' tables, averaged field by field.
+  CostTable avg;
+  for (auto& [id, v] : avg.fields())
+    *v = 0;
   std::map<std::string, int> ranks_on;
   std::map<std::string, double> mem_of;
   nlohmann::json per_rank = nlohmann::json::array();
   for (const auto& b : all) {
     const auto j = nlohmann::json::parse(std::string(b.begin(), b.end()));
-    for (std::size_t g = 0; g < kavg.size(); ++g)
-      kavg[g] += j["k"][g].get<double>() / double(all.size());
+    for (auto& [id, v] : avg.fields())
+      *v += j["cost"][id].get<double>() / double(all.size());
     ++ranks_on[j["host"]];
     mem_of[j["host"]] = j["memory"];
     per_rank.push_back(j);
@@ -248,7 +301,7 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
   spec.net.switching = Switching::Circuit;
   spec.net.host_startup_s = net.short_s;
   spec.net.host_per_byte_s = net.per_byte_s;
-  spec.cost = scale_groups(prior_i386_costs(), kavg);
+  spec.cost = avg;
   spec.cost_calibrated = true;
   const auto outs = probe_outputs(o, size);
   std::vector<int> counts = o.nodes.empty() ? std::vector<int>{size} : o.nodes;
@@ -267,7 +320,13 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
             {"startup_long_s", net.long_s},
             {"per_byte_s", net.per_byte_s},
             {"samples", net.samples}}},
-          {"cpu_group_scale", kavg},
+          {"cost",
+           [&] {
+             nlohmann::json c = nlohmann::json::object();
+             for (auto& [id, v] : avg.fields())
+               c[id] = *v;
+             return c;
+           }()},
           {"ranks", per_rank},
           {"memory_bytes_per_node", spec.memory_bytes},
           {"platforms", written},

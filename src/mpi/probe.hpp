@@ -5,10 +5,11 @@
 //    one-way time is half the best round trip of several. Short start-up = the mean one-way time
 //    of messages up to 100 B; long start-up and per-byte cost = least squares over the larger
 //    ones. Every pair is taken alike (a switched cluster: per-hop cost 0).
-//  - CPU: every rank times the real renderer (teapot and bunny at several sizes, with their exact
-//    operation counts), a frame-buffer merge and a memory copy, and fits one multiplier per cost
-//    group of the 80386 prior table (NNLS, pulled weakly towards a single overall speed-up);
-//    rank 0 averages the ranks.
+//  - CPU: every rank times counted kernels of the real renderer (vertex transforms alone,
+//    triangle set-up alone, whole renders of the teapot and the bunny at several sizes), a
+//    clear, a frame-buffer merge and a memory copy, and fits one multiplier of the 80386 prior
+//    table per probe group (vertex, triangle, spans, pixels, clear, merge, packing; NNLS on
+//    relative errors, pulled weakly towards one overall ratio); rank 0 averages the ranks.
 //  - Memory: the host's physical memory shared by the ranks on it.
 #include <string>
 #include <vector>
