@@ -4,6 +4,12 @@
 #include "cli/paths.hpp"
 #include "repro/reproduce.hpp"
 #include "sim/batch.hpp"
+#ifdef ZCUBE_HAVE_MPI
+#include <optional>
+
+#include "mpi/mpi_session.hpp"
+#include "mpi/sharded_batch.hpp"
+#endif
 
 namespace zc::cli {
 
@@ -20,9 +26,11 @@ static int cmd_reproduce(std::vector<std::string> args) {
       ->check(CLI::IsMember({"kurc", "charles", "blazek", "charles95", "blazek91", "all"}))
       ->capture_default_str();
   app.add_option("--out", o.out, "output directory")->capture_default_str();
-  app.add_option("--jobs", o.jobs, "simulations at once (each its own process)")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  [[maybe_unused]] auto* jobs_opt =
+      app.add_option("--jobs", o.jobs,
+                     "simulations at once, each its own process (per rank under mpirun: 1)")
+          ->check(CLI::PositiveNumber)
+          ->capture_default_str();
   app.add_flag("--full", o.full, "Blazek's whole grid: 1..2048 spheres (about an hour)");
   app.add_flag("--no-plots", no_plots, "skip the PNG plots");
   if (int rc = parse(app, args); rc >= 0) return rc;
@@ -30,6 +38,16 @@ static int cmd_reproduce(std::vector<std::string> args) {
   if (which == "charles95") which = "charles"; // the names of DESIGN §3
   if (which == "blazek91") which = "blazek";
   if (which != "all") o.papers = {which};
+#ifdef ZCUBE_HAVE_MPI
+  // Under mpirun: the simulations are shared among the ranks; rank 0 writes the results.
+  std::optional<MpiSession> mpi;
+  if (launched_by_mpirun()) {
+    mpi.emplace();
+    if (!jobs_opt->count()) o.jobs = 1;
+    o.runner = run_batch_sharded;
+    o.write = mpi->rank() == 0;
+  }
+#endif
   return reproduce(o);
 }
 

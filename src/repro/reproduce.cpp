@@ -88,9 +88,10 @@ int reproduce(const ReproduceOptions& o) {
       cfgs.push_back(pt.cfg);
   if (o.verbose)
     std::cerr << "reproduce: " << cfgs.size() << " simulations, " << o.jobs << " at a time\n";
-  const auto reps = run_batch(cfgs, o.jobs,
-                              o.verbose ? progress_printer("reproduce")
-                                        : std::function<void(const BatchProgress&)>{});
+  const auto progress = o.verbose && o.write ? progress_printer("reproduce")
+                                             : std::function<void(const BatchProgress&)>{};
+  const auto reps = o.runner ? o.runner(cfgs, o.jobs, progress) : run_batch(cfgs, o.jobs, progress);
+  if (!o.write) return 0;
 
   int status = 0;
   std::size_t i = 0;

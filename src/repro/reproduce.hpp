@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "sim/batch.hpp"
 #include "sim/simulation.hpp"
 
 namespace zc {
@@ -22,6 +23,12 @@ struct ReproduceOptions {
   int jobs = 2;
   bool plots = true;
   bool verbose = true;
+  // How the points run: a local batch by default; `mpirun zcube reproduce` passes a batch sharded
+  // over the ranks, and only the rank that gets the reports (write = true) writes files.
+  std::function<std::vector<nlohmann::json>(const std::vector<SimConfig>&, int,
+                                            const std::function<void(const BatchProgress&)>&)>
+      runner;
+  bool write = true;
 };
 
 struct ReproPoint {

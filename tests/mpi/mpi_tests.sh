@@ -84,6 +84,12 @@ for r in csv.DictReader(open(sys.argv[1])):
     [ "$(wc -l <"$tmp/sharded/sweep.csv")" = 17 ] || bad "expected 16 rows"
     [ "$fail" = 0 ] && echo "ok   sharded sweep = local sweep (16 points, 4 failed)"
   fi
+  # A sharded reproduction writes the committed figures.
+  mpi 2 reproduce charles --out "$tmp/rep" --no-plots >/dev/null 2>&1 || bad "sharded reproduce failed"
+  for f in speedup.csv table1.csv; do
+    diff -q "$tmp/rep/charles/$f" "$src/results/charles/$f" >/dev/null || bad "sharded reproduce: $f differs"
+  done
+  [ "$fail" = 0 ] && echo "ok   mpirun reproduce charles = committed results"
   ;;
 probe)
   # probe writes a platform the simulator loads; compare prints the table and rejects bad files.
