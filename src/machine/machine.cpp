@@ -65,6 +65,17 @@ CostTable scale_groups(const CostTable& t, const std::vector<CostGroup>& groups,
   return out;
 }
 
+std::vector<double> group_seconds(const CostTable& prices, const std::vector<CostGroup>& groups,
+                                  const Counters& work) {
+  std::vector<double> out;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    std::vector<double> only(groups.size(), 0.0);
+    only[g] = 1.0;
+    out.push_back(scale_groups(prices, groups, only).seconds(work));
+  }
+  return out;
+}
+
 CostTable i386_costs() {
   static_assert(std::size(calibrated::kI386GroupScale) == 6, "one multiplier per cost group");
   return scale_groups(prior_i386_costs(),

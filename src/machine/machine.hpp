@@ -69,6 +69,10 @@ const std::vector<CostGroup>& cost_groups();
 CostTable scale_groups(const CostTable& t, const std::vector<double>& scale);
 CostTable scale_groups(const CostTable& t, const std::vector<CostGroup>& groups,
                        const std::vector<double>& scale);
+// Seconds the operations of `work` take at `prices`, one figure per group (the columns of the
+// calibration's and the probe's linear fits).
+std::vector<double> group_seconds(const CostTable& prices, const std::vector<CostGroup>& groups,
+                                  const Counters& work);
 // The placeholder table the calibration starts from: compiled C on a 16 MHz 80386 + 80387 node.
 CostTable prior_i386_costs();
 // The calibrated tables (calibrated_costs.hpp): the iPSC/2's 80386, and the i860 of the iPSC/860

@@ -102,17 +102,20 @@ template <class F> double time_per_call(F&& fn, double min_s) {
 // The probe's own grouping of the cost fields, finer than the calibration's where a kernel can
 // time a field by itself (the vertex transform apart from the triangle set-up).
 const std::vector<CostGroup>& probe_groups() {
-  static const std::vector<CostGroup> g = {
-      {"vertex", {"vertices_transformed"}},
-      {"triangle",
-       {"triangles_in", "triangles_culled", "triangles_clipped", "triangles_setup",
-        "triangles_estimated", "triangles_tessellated"}},
-      {"spans", {"spans", "rows_scanned"}},
-      {"pixels",
-       {"pixels_generated", "pixels_tested", "pixels_written", "pixels_final", "texels_fetched"}},
-      {"clear", {"pixels_cleared"}},
-      {"merge", {"merge_ops"}},
-      {"packing", {"bytes_packed"}}};
+  static const std::vector<CostGroup> g = [] {
+    std::vector<CostGroup> v;
+    for (CostGroup c : cost_groups()) {
+      if (c.name != "geometry") {
+        v.push_back(std::move(c));
+        continue;
+      }
+      // The calibration's geometry group, with the vertex transform on its own.
+      std::erase(c.fields, std::string("vertices_transformed"));
+      v.push_back({"vertex", {"vertices_transformed"}});
+      v.push_back({"triangle", std::move(c.fields)});
+    }
+    return v;
+  }();
   return g;
 }
 
@@ -124,20 +127,10 @@ CostTable measure_cpu(const ProbeOptions& o, nlohmann::json& log) {
   const CostTable prior = prior_i386_costs();
   const auto& groups = probe_groups();
   const std::size_t G = groups.size();
-  auto priced = [&](const Counters& c) { // A_g: the group's operations at prior prices
-    CostTable p = prior;
-    nlohmann::json cj = c;
-    std::vector<double> a(G, 0.0);
-    for (std::size_t g = 0; g < G; ++g)
-      for (const auto& f : groups[g].fields)
-        for (auto& [id, v] : p.fields())
-          if (id == "cost_" + f) a[g] += cj[f].get<double>() * *v;
-    return a;
-  };
   Matrix A;
   std::vector<double> b;
   auto add = [&](const std::string& what, const Counters& c, double t) {
-    A.push_back(priced(c));
+    A.push_back(group_seconds(prior, groups, c)); // the groups' operations at prior prices
     b.push_back(t);
     log.push_back({{"case", what}, {"seconds", t}, {"counters", c}});
   };

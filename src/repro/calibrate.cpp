@@ -8,7 +8,6 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
-#include <map>
 #include <sstream>
 
 #include "machine/machine.hpp"
@@ -55,10 +54,6 @@ std::vector<nlohmann::json> run_all(const std::vector<SimConfig>& cfgs,
   return reps;
 }
 
-double field_count(const nlohmann::json& work, const std::string& field) {
-  return work.contains(field) ? work[field].get<double>() : 0.0;
-}
-
 // ---- 1. iPSC/2 against Kurc et al. Table 2 ----------------------------------------------------
 
 struct KurcRun {
@@ -99,10 +94,6 @@ struct PhaseRow {
 
 std::vector<PhaseRow> kurc_rows(const std::vector<nlohmann::json>& reps, const CostTable& prior,
                                 const std::vector<double>& k) {
-  CostTable p = prior;
-  std::map<std::string, double> price;
-  for (auto& [id, v] : p.fields())
-    price[id.substr(5)] = *v; // strip "cost_"
   const auto runs = kurc_runs();
   std::vector<PhaseRow> rows;
   for (const auto& f : kurc_table2_p16()) {
@@ -124,15 +115,12 @@ std::vector<PhaseRow> kurc_rows(const std::vector<nlohmann::json>& reps, const C
     row.id = "kurc/p16/" + f.scene + "/" + f.scheme + "/" + f.phase;
     row.time = best;
     row.paper = f.ms * 1e-3;
-    const nlohmann::json work = (*crit)["phase_work"].value(f.phase, nlohmann::json::object());
+    const Counters work =
+        (*crit)["phase_work"].value(f.phase, nlohmann::json::object()).get<Counters>();
+    row.a = group_seconds(prior, cost_groups(), work);
     double cpu = 0;
-    for (std::size_t g = 0; g < cost_groups().size(); ++g) {
-      double a = 0;
-      for (const auto& fld : cost_groups()[g].fields)
-        a += field_count(work, fld) * price[fld];
-      row.a.push_back(a);
-      cpu += k[g] * a;
-    }
+    for (std::size_t g = 0; g < row.a.size(); ++g)
+      cpu += k[g] * row.a[g];
     row.wait = best - cpu;
     rows.push_back(row);
   }
