@@ -5,6 +5,7 @@
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
 #include "cli/paths.hpp"
+#include "repro/plot_script.hpp"
 #include "repro/progress.hpp"
 #include "repro/reproduce.hpp"
 #include "repro/sweep.hpp"
@@ -20,18 +21,6 @@
 namespace zc::cli {
 
 std::string default_scene_path(); // cmd_render.cpp
-
-static std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) {
-    if (c == '\'')
-      q += "'\\''";
-    else
-      q += c;
-  }
-  q += '\'';
-  return q;
-}
 
 static int cmd_sweep(std::vector<std::string> args) {
   CLI::App app{"Run the Cartesian product of comma-separated flag values, one process a point "
@@ -113,11 +102,9 @@ static int cmd_sweep(std::vector<std::string> args) {
                 << "\n";
     }
   if (!no_plot && !plot_x.empty()) {
-    const std::string cmd = python3() + " " +
-                            shell_quote(source_root() + "/scripts/plot_results.py") + " --sweep " +
-                            shell_quote(out + "/sweep.csv") + " " + shell_quote(plot_x) + " " +
-                            shell_quote(plot_y) + " " + shell_quote(out + "/sweep.png");
-    if (std::system(cmd.c_str()) != 0) std::cerr << "sweep: plot not drawn\n";
+    if (!run_plot_script(source_root(),
+                         {"--sweep", out + "/sweep.csv", plot_x, plot_y, out + "/sweep.png"}))
+      std::cerr << "sweep: plot not drawn\n";
   }
   std::cout << "sweep: " << rows.size() << " points, " << failed << " failed; wrote " << out
             << "/sweep.csv, sweep.json" << (no_plot || plot_x.empty() ? "" : ", sweep.png") << "\n";

@@ -1,11 +1,11 @@
 #include "repro/reproduce.hpp"
 
 #include <chrono>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 
+#include "repro/plot_script.hpp"
 #include "repro/progress.hpp"
 #include "repro/table.hpp"
 #include "sim/batch.hpp"
@@ -14,13 +14,6 @@
 namespace zc {
 
 namespace {
-
-std::string shell_quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s)
-    q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
 
 std::string top_readme(const ReproduceOptions& o, double wall_s, std::size_t points,
                        const std::string& fidelity_md) {
@@ -59,12 +52,6 @@ std::string top_readme(const ReproduceOptions& o, double wall_s, std::size_t poi
 }
 
 } // namespace
-
-std::string python3() {
-  // Debian's interpreter first: its python3-matplotlib is the one scripts/setup.sh installs (a
-  // python3 earlier on PATH, e.g. pyenv's, may not have it).
-  return std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-}
 
 int reproduce(const ReproduceOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -139,9 +126,7 @@ int reproduce(const ReproduceOptions& o) {
   if (all) write_text(o.out + "/README.md", top_readme(o, wall, cfgs.size(), fidelity_md));
 
   if (o.plots) {
-    const std::string cmd = python3() + " " + shell_quote(o.root + "/scripts/plot_results.py") +
-                            " " + shell_quote(o.out);
-    if (std::system(cmd.c_str()) != 0)
+    if (!run_plot_script(o.root, {o.out}))
       std::cerr << "reproduce: plots not drawn (needs python3-matplotlib: scripts/setup.sh "
                    "installs it)\n";
   }

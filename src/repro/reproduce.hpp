@@ -60,6 +60,5 @@ SimConfig repro_config(const std::string& machine, int nodes, const std::string&
 double virtual_s(const nlohmann::json& report);
 bool ok(const nlohmann::json& report);
 bool out_of_memory(const nlohmann::json& report);
-std::string python3(); // the interpreter for scripts/plot_results.py
 
 } // namespace zc
