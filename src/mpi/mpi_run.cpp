@@ -1,7 +1,5 @@
 #include "mpi/mpi_run.hpp"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <chrono>
 #include <iostream>
@@ -67,12 +65,6 @@ std::vector<FrameImage> unpack_images(const Bytes& b) {
   return out;
 }
 
-std::string host_name() {
-  char buf[256] = {};
-  gethostname(buf, sizeof buf - 1);
-  return buf;
-}
-
 } // namespace
 
 SimResult run_mpi(const SimConfig& cfg) {
@@ -120,7 +112,7 @@ SimResult run_mpi(const SimConfig& cfg) {
 
   const nlohmann::json mine = {
       {"record", ctx.record(rank == P ? nlohmann::json("srm") : nlohmann::json(rank))},
-      {"host", host_name()}};
+      {"host", processor_name()}};
   const std::string text = mine.dump();
   const auto records = gather_to_root(Bytes(text.begin(), text.end()));
   const auto pictures = gather_to_root(pack_images(images));

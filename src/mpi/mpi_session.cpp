@@ -59,6 +59,13 @@ double max_over_ranks(double v) {
   return m;
 }
 
+std::string processor_name() {
+  char buf[MPI_MAX_PROCESSOR_NAME] = {};
+  int n = 0;
+  MPI_Get_processor_name(buf, &n);
+  return std::string(buf, std::size_t(n));
+}
+
 bool launched_by_mpirun() {
   for (const char* k : {"OMPI_COMM_WORLD_SIZE", "PMI_SIZE", "PMIX_SIZE", "MPI_LOCALNRANKS"})
     if (const char* v = std::getenv(k); v && std::atoi(v) > 1) return true;

@@ -28,6 +28,8 @@ private:
 // Every rank's `mine`, in rank order, at rank 0 (empty elsewhere).
 std::vector<Bytes> gather_to_root(const Bytes& mine);
 double max_over_ranks(double v);
+// The name of the machine this rank runs on (MPI_Get_processor_name).
+std::string processor_name();
 // True when this process was started by mpirun/mpiexec with more than one rank.
 bool launched_by_mpirun();
 

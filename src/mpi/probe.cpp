@@ -213,12 +213,6 @@ CostTable measure_cpu(const ProbeOptions& o, nlohmann::json& log) {
   return scale_groups(prior, groups, nnls(A, b));
 }
 
-std::string host_name() {
-  char buf[256] = {};
-  gethostname(buf, sizeof buf - 1);
-  return buf;
-}
-
 } // namespace
 
 std::vector<std::string> probe_outputs(const ProbeOptions& o, int ranks) {
@@ -251,7 +245,7 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
       cost_json[id] = *v;
   }
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
-  const nlohmann::json mine = {{"host", host_name()},
+  const nlohmann::json mine = {{"host", processor_name()},
                                {"cost", cost_json},
                                {"cpu", cpu_log},
                                {"memory", double(pages) * double(page)}};
