@@ -8,7 +8,6 @@
 #include "mpi/mpi_comm.hpp"
 #include "mpi/mpi_context.hpp"
 #include "mpi/mpi_session.hpp"
-#include "repro/paper_figures.hpp"
 #include "scene/load.hpp"
 #include "util/error.hpp"
 

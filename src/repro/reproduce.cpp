@@ -2,8 +2,9 @@
 
 #include <chrono>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
+#include <map>
+#include <stdexcept>
 
 #include "repro/plot_script.hpp"
 #include "repro/progress.hpp"
@@ -51,6 +52,31 @@ std::string top_readme(const ReproduceOptions& o, double wall_s, std::size_t poi
          fidelity_md;
 }
 
+// Everything a simulation depends on, as text: equal keys, equal runs. (A field added to
+// SimConfig must be added here too, or two different runs would be taken for one.)
+std::string config_key(const SimConfig& c) {
+  if (c.custom) throw std::logic_error("reproduce plans name their algorithms");
+  nlohmann::json j = {{"machine", c.machine},
+                      {"nodes", c.nodes},
+                      {"topology", topology_name(c.topology)},
+                      {"fidelity", fidelity_name(c.fidelity)},
+                      {"algorithm", c.algorithm},
+                      {"options", c.options.values},
+                      {"frames", c.options.frames},
+                      {"scene", c.scene_path},
+                      {"width", c.width},
+                      {"height", c.height},
+                      {"compare", c.compare_with_sequential}};
+  const Overrides& v = c.overrides;
+  const std::pair<const char*, const std::optional<double>*> over[] = {
+      {"latency_s", &v.latency_s},       {"bandwidth_Bps", &v.bandwidth_Bps},
+      {"per_hop_s", &v.per_hop_s},       {"cpu_scale", &v.cpu_scale},
+      {"memory_bytes", &v.memory_bytes}, {"cost_scale", &v.cost_scale}};
+  for (const auto& [k, x] : over)
+    if (*x) j[k] = **x;
+  return j.dump();
+}
+
 } // namespace
 
 int reproduce(const ReproduceOptions& o) {
@@ -69,11 +95,18 @@ int reproduce(const ReproduceOptions& o) {
   const bool all = o.papers.size() == 3;
   if (all) plans.push_back(fidelity_plan(o));
 
+  // Plans share some points (Table 2's 16-node runs are also speed-up and fidelity points): each
+  // distinct configuration is simulated once.
   std::vector<SimConfig> cfgs;
+  std::map<std::string, std::size_t> index_of;
+  std::vector<std::size_t> point_run;
   for (const auto& p : plans)
-    for (const auto& pt : p.points)
-      cfgs.push_back(pt.cfg);
-  if (o.verbose)
+    for (const auto& pt : p.points) {
+      const auto [it, fresh] = index_of.emplace(config_key(pt.cfg), cfgs.size());
+      if (fresh) cfgs.push_back(pt.cfg);
+      point_run.push_back(it->second);
+    }
+  if (o.verbose && o.write)
     std::cerr << "reproduce: " << cfgs.size() << " simulations, " << o.jobs << " at a time\n";
   const auto progress = o.verbose && o.write ? progress_printer("reproduce")
                                              : std::function<void(const BatchProgress&)>{};
@@ -82,11 +115,11 @@ int reproduce(const ReproduceOptions& o) {
 
   int status = 0;
   std::size_t i = 0;
-  std::string fidelity_md;
+  std::string summaries;
   for (const auto& p : plans) {
     Reports r;
     for (const auto& pt : p.points) {
-      const auto& rep = reps[i++];
+      const auto& rep = reps[point_run[i++]];
       if (rep.value("status", "") == "error") {
         std::cerr << "reproduce: " << (p.name.empty() ? "fidelity" : p.name) << " point " << pt.key
                   << " failed: " << rep.value("error", "?") << "\n";
@@ -100,30 +133,10 @@ int reproduce(const ReproduceOptions& o) {
     }
     const std::string dir = p.name.empty() ? o.out : o.out + "/" + p.name;
     std::filesystem::create_directories(dir);
-    p.write(r, dir);
-    if (p.name.empty()) {
-      // fidelity.csv as a Markdown table for the top README.
-      std::ifstream f(dir + "/fidelity.csv");
-      std::string line;
-      Table t;
-      bool first = true;
-      while (std::getline(f, line)) {
-        std::vector<std::string> cells;
-        std::size_t a = 0;
-        for (std::size_t b; (b = line.find(',', a)) != std::string::npos; a = b + 1)
-          cells.push_back(line.substr(a, b - a));
-        cells.push_back(line.substr(a));
-        if (first)
-          t.header = cells;
-        else
-          t.add(cells);
-        first = false;
-      }
-      fidelity_md = t.markdown();
-    }
+    summaries += p.write(r, dir);
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (all) write_text(o.out + "/README.md", top_readme(o, wall, cfgs.size(), fidelity_md));
+  if (all) write_text(o.out + "/README.md", top_readme(o, wall, cfgs.size(), summaries));
 
   if (o.plots) {
     if (!run_plot_script(o.root, {o.out}))

@@ -40,8 +40,9 @@ using Reports = std::map<std::string, nlohmann::json>; // by point key
 struct PaperPlan {
   std::string name; // the output subdirectory (empty: files at the top of `out`)
   std::vector<ReproPoint> points;
-  // Writes the plan's files under dir from the reports of its points.
-  std::function<void(const Reports&, const std::string& dir)> write;
+  // Writes the plan's files under dir from the reports of its points; returns what it has to say
+  // in results/README.md (Markdown; empty for nothing).
+  std::function<std::string(const Reports&, const std::string& dir)> write;
 };
 
 PaperPlan kurc_plan(const ReproduceOptions& o);

@@ -36,7 +36,7 @@ std::string key(const FidelityRun& r, const char* f) {
   return r.name + "/" + f;
 }
 
-void write_fidelity(const Reports& reps, const std::string& dir) {
+std::string write_fidelity(const Reports& reps, const std::string& dir) {
   Table t{{"run", "fidelity", "virtual_s", "rel_error", "wall_s"}, {}};
   for (const auto& r : kRuns) {
     const auto& ref = reps.at(key(r, "circuit"));
@@ -51,6 +51,7 @@ void write_fidelity(const Reports& reps, const std::string& dir) {
     }
   }
   t.write_csv(dir + "/fidelity.csv");
+  return t.markdown();
 }
 
 } // namespace
