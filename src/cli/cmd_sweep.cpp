@@ -55,13 +55,9 @@ static int cmd_sweep(std::vector<std::string> args) {
         break;
       }
   const auto points = expand_sweep(axes, default_scene_path());
-  std::vector<SimConfig> cfgs;
-  std::vector<std::size_t> runnable;
-  for (std::size_t i = 0; i < points.size(); ++i)
-    if (points[i].config) {
-      cfgs.push_back(*points[i].config);
-      runnable.push_back(i);
-    }
+  std::size_t invalid = 0;
+  for (const auto& p : points)
+    invalid += !p.config;
 #ifdef ZCUBE_HAVE_MPI
   // Under mpirun: the points are shared among the ranks; rank 0 writes the files.
   std::optional<MpiSession> mpi;
@@ -76,22 +72,19 @@ static int cmd_sweep(std::vector<std::string> args) {
   const int ranks = 1;
 #endif
   if (root)
-    std::cerr << "sweep: " << points.size() << " points (" << points.size() - cfgs.size()
-              << " invalid), " << jobs << " at a time"
+    std::cerr << "sweep: " << points.size() << " points (" << invalid << " invalid), " << jobs
+              << " at a time"
               << (ranks > 1 ? " on each of " + std::to_string(ranks) + " MPI ranks" : "") << "\n";
-  std::vector<nlohmann::json> ran;
+  const auto reports = run_points(points, [&](const std::vector<SimConfig>& cfgs) {
 #ifdef ZCUBE_HAVE_MPI
-  if (mpi) {
-    ran = run_batch_sharded(cfgs, jobs,
-                            root ? progress_printer("sweep (rank 0's share)")
-                                 : std::function<void(const BatchProgress&)>{});
-    if (!root) return 0;
-  } else
+    if (mpi)
+      return run_batch_sharded(cfgs, jobs,
+                               root ? progress_printer("sweep (rank 0's share)")
+                                    : std::function<void(const BatchProgress&)>{});
 #endif
-    ran = run_batch(cfgs, jobs, progress_printer("sweep"));
-  std::vector<nlohmann::json> reports(points.size(), nlohmann::json::object());
-  for (std::size_t k = 0; k < runnable.size(); ++k)
-    reports[runnable[k]] = ran[k];
+    return run_batch(cfgs, jobs, progress_printer("sweep"));
+  });
+  if (!root) return 0;
   const nlohmann::json rows = sweep_rows(axes, points, reports);
   write_sweep(axes, rows, reports, out);
   int failed = 0;

@@ -59,28 +59,20 @@ nlohmann::json reduce_report(const nlohmann::json& r) {
 std::map<std::string, nlohmann::json> run_regress(const std::vector<RegressRun>& runs,
                                                   const std::string& root, int jobs,
                                                   const std::map<std::string, std::string>& set) {
-  std::vector<SimConfig> cfgs;
-  std::vector<std::string> bad(runs.size());
-  std::vector<std::size_t> idx;
-  for (std::size_t i = 0; i < runs.size(); ++i) {
-    auto flags = runs[i].flags;
+  std::vector<SweepPoint> points;
+  for (const auto& run : runs) {
+    auto flags = run.flags;
     for (const auto& [k, v] : set)
       flags[k] = v;
     if (flags.count("scene") && !std::filesystem::path(flags["scene"]).is_absolute())
       flags["scene"] = root + "/" + flags["scene"];
-    try {
-      cfgs.push_back(config_from_flags(flags, root + "/scenes/teapot.json"));
-      idx.push_back(i);
-    } catch (const std::exception& ex) {
-      bad[i] = ex.what();
-    }
+    points.push_back(make_point(std::move(flags), root + "/scenes/teapot.json"));
   }
-  const auto reps = run_batch(cfgs, jobs);
+  const auto reps =
+      run_points(points, [jobs](const std::vector<SimConfig>& c) { return run_batch(c, jobs); });
   std::map<std::string, nlohmann::json> out;
   for (std::size_t i = 0; i < runs.size(); ++i)
-    if (!bad[i].empty()) out[runs[i].name] = {{"status", "error"}, {"error", bad[i]}};
-  for (std::size_t k = 0; k < idx.size(); ++k)
-    out[runs[idx[k]].name] = reduce_report(reps[k]);
+    out[runs[i].name] = reduce_report(reps[i]);
   return out;
 }
 

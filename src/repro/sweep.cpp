@@ -34,14 +34,35 @@ std::vector<SweepPoint> expand_sweep(const std::vector<SweepAxis>& axes, const s
       }
     pts = std::move(next);
   }
-  for (auto& p : pts) {
-    try {
-      p.config = config_from_flags(p.values, scene);
-    } catch (const std::exception& ex) {
-      p.error = ex.what();
-    }
-  }
+  for (auto& p : pts)
+    p = make_point(std::move(p.values), scene);
   return pts;
+}
+
+SweepPoint make_point(std::map<std::string, std::string> values, const std::string& scene) {
+  SweepPoint p;
+  p.values = std::move(values);
+  try {
+    p.config = config_from_flags(p.values, scene);
+  } catch (const std::exception& ex) {
+    p.error = ex.what();
+  }
+  return p;
+}
+
+std::vector<nlohmann::json> run_points(const std::vector<SweepPoint>& points,
+                                       const BatchRunner& runner) {
+  std::vector<SimConfig> cfgs;
+  for (const auto& p : points)
+    if (p.config) cfgs.push_back(*p.config);
+  const auto ran = runner(cfgs);
+  if (ran.size() != cfgs.size()) return {};
+  std::vector<nlohmann::json> reports;
+  std::size_t k = 0;
+  for (const auto& p : points)
+    reports.push_back(p.config ? ran[k++]
+                               : nlohmann::json{{"status", "error"}, {"error", p.error}});
+  return reports;
 }
 
 nlohmann::json sweep_rows(const std::vector<SweepAxis>& axes, const std::vector<SweepPoint>& pts,
@@ -59,9 +80,9 @@ nlohmann::json sweep_rows(const std::vector<SweepAxis>& axes, const std::vector<
     row["index"] = i;
     for (const auto& ax : axes)
       row[ax.flag] = pts[i].values.at(ax.flag);
-    const std::string status = pts[i].config ? r.value("status", "error") : "error";
+    const std::string status = r.value("status", "error");
     row["status"] = status;
-    row["error"] = pts[i].config ? r.value("error", "") : pts[i].error;
+    row["error"] = r.value("error", "");
     const bool ran = status == "ok";
     row["virtual_s"] = ran ? nlohmann::json(r["virtual_time_s"]) : nlohmann::json(nullptr);
     row["wall_s"] = r.contains("host") ? r["host"]["wall_time_s"] : nlohmann::json(nullptr);

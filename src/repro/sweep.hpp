@@ -2,6 +2,7 @@
 // `zcube sweep`: the Cartesian product of list-valued run flags (--nodes 1,2,4 --latency
 // 10us,1ms ...), each point one simulation in its own process. A point whose flags are invalid or
 // whose run fails keeps its row with the reason; the others are not affected.
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -28,8 +29,18 @@ struct SweepPoint {
   std::string error;                         // why not
 };
 
+// The point the flags describe: its configuration, or the reason it has none.
+SweepPoint make_point(std::map<std::string, std::string> values, const std::string& scene);
+
 // Every combination, the first axis varying slowest. `scene` is the default scene path.
 std::vector<SweepPoint> expand_sweep(const std::vector<SweepAxis>& axes, const std::string& scene);
+
+// Runs the points that have a configuration through `runner` (a local or a sharded batch) and
+// returns one report per point, an invalid point's being {"status": "error", "error": reason}.
+// Empty when the runner returns nothing (the other ranks of a sharded batch).
+using BatchRunner = std::function<std::vector<nlohmann::json>(const std::vector<SimConfig>&)>;
+std::vector<nlohmann::json> run_points(const std::vector<SweepPoint>& points,
+                                       const BatchRunner& runner);
 
 // One row per point: the axis values, then status, error, virtual_s, wall_s, messages, bytes,
 // concurrent_volume_bytes, load_imbalance, image_sha256, identical, and one "phase:<name>" column
