@@ -59,6 +59,12 @@ public:
   // Charges the counted operations to this node's CPU: virtual time advances by
   // sum(count x cost) x cpu-scale.
   virtual void charge(const Counters& work) = 0;
+  // Charges copying `bytes` into or out of message buffers (the one place packing is priced).
+  void charge_packing(std::size_t bytes) {
+    Counters c;
+    c.bytes_packed = bytes;
+    charge(c);
+  }
 
   // Named phase: the time between begin and end is recorded for this node (a phase may be entered
   // several times; the durations add up).

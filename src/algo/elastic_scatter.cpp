@@ -1,0 +1,94 @@
+// Charles, Lefevre, Miguet 1995, §4: Scatter(Vertices); Scatter(Triangles). "All the vertices of
+// the scene are equally distributed on the parallel computer", and the triangles likewise; a
+// node's triangles may use vertices another node holds.
+#include <algorithm>
+
+#include "algo/elastic_steps.hpp"
+#include "comm/collectives.hpp"
+#include "comm/wire.hpp"
+
+namespace zc::elastic {
+
+std::size_t block_lo(std::size_t n, int P, int k) {
+  return n * std::size_t(k) / std::size_t(P);
+}
+
+int block_owner(std::size_t n, int P, std::size_t i) {
+  // The k with block_lo(k) <= i < block_lo(k+1).
+  int k = int((i * std::size_t(P)) / std::max<std::size_t>(n, 1));
+  while (k + 1 < P && block_lo(n, P, k + 1) <= i)
+    ++k;
+  while (k > 0 && block_lo(n, P, k) > i)
+    --k;
+  return k;
+}
+
+namespace {
+
+std::vector<Vertex> scatter_vertices(NodeContext& ctx, const Scene& scene) {
+  auto ph = ctx.phase("scatter_vertices");
+  const int P = ctx.nodes();
+  const std::size_t V = scene.vertices.size();
+  std::vector<Bytes> parts;
+  if (ctx.rank() == 0) {
+    for (int k = 0; k < P; ++k)
+      parts.push_back(pack(scene.vertices.data() + block_lo(V, P, k),
+                           block_lo(V, P, k + 1) - block_lo(V, P, k)));
+    ctx.charge_packing(V * sizeof(Vertex));
+  }
+  auto mine = unpack<Vertex>(coll::scatterv(ctx.comm(), 0, std::move(parts)));
+  ctx.alloc(double(mine.size() * sizeof(Vertex)), "vertex block");
+  return mine;
+}
+
+std::vector<TriRec> scatter_triangles(NodeContext& ctx, const Scene& scene) {
+  auto ph = ctx.phase("scatter_triangles");
+  const int P = ctx.nodes();
+  const std::size_t T = scene.triangles.size();
+  std::vector<Bytes> parts;
+  if (ctx.rank() == 0) {
+    for (int k = 0; k < P; ++k) {
+      std::vector<TriRec> block;
+      for (std::size_t i = block_lo(T, P, k); i < block_lo(T, P, k + 1); ++i) {
+        const Triangle& t = scene.triangles[i];
+        block.push_back({std::uint32_t(i), {t.v[0], t.v[1], t.v[2]}, t.material});
+      }
+      parts.push_back(pack(block));
+    }
+    ctx.charge_packing(T * sizeof(TriRec));
+  }
+  auto mine = unpack<TriRec>(coll::scatterv(ctx.comm(), 0, std::move(parts)));
+  ctx.alloc(double(mine.size() * sizeof(TriRec)), "triangle block");
+  return mine;
+}
+
+// Each node contributes the texture coordinates of its vertex block.
+std::vector<glm::vec2> multibroadcast_uvs(NodeContext& ctx, const Scene& scene, std::size_t lo,
+                                          std::size_t hi) {
+  auto ph = ctx.phase("multibroadcast_uvs");
+  std::vector<glm::vec2> uvs;
+  for (auto& b : coll::allgatherv(ctx.comm(), pack(scene.uvs.data() + lo, hi - lo))) {
+    auto part = unpack<glm::vec2>(b);
+    uvs.insert(uvs.end(), part.begin(), part.end());
+  }
+  ctx.alloc(double(uvs.size() * sizeof(glm::vec2)), "texture coordinates");
+  return uvs;
+}
+
+} // namespace
+
+LocalScene scatter_scene(NodeContext& ctx) {
+  const Scene& scene = ctx.scene(); // node 0 reads it from disk; the others only get blocks
+  const int P = ctx.nodes(), r = ctx.rank();
+  LocalScene local;
+  local.scene_vertices = scene.vertices.size();
+  local.first_vertex = block_lo(local.scene_vertices, P, r);
+  local.vertices = scatter_vertices(ctx, scene);
+  local.triangles = scatter_triangles(ctx, scene);
+  if (scene.textured())
+    local.uvs = multibroadcast_uvs(ctx, scene, local.first_vertex,
+                                   block_lo(local.scene_vertices, P, r + 1));
+  return local;
+}
+
+} // namespace zc::elastic

@@ -1,0 +1,71 @@
+// Charles, Lefevre, Miguet 1995: MultiBroadcast(Projected Vertices) (§4) and the request/answer
+// scheme of §7 that replaces it.
+#include "algo/elastic_vertices.hpp"
+
+#include <algorithm>
+
+#include "comm/collectives.hpp"
+#include "comm/wire.hpp"
+
+namespace zc::elastic {
+
+void BroadcastVertices::exchange(NodeContext& ctx, const LocalScene& local,
+                                 const std::vector<ProjectedVertex>& mine) {
+  auto ph = ctx.phase("multibroadcast_vertices");
+  all.reserve(local.scene_vertices);
+  for (auto& b : coll::allgatherv(ctx.comm(), pack(mine))) {
+    auto part = unpack<ProjectedVertex>(b);
+    all.insert(all.end(), part.begin(), part.end());
+  }
+  bytes = double(all.size() * sizeof(ProjectedVertex));
+  ctx.charge_packing(std::size_t(bytes));
+}
+
+namespace {
+
+// The distinct vertices of the node's triangles, listed per owning node (ascending ids).
+std::vector<std::vector<std::uint32_t>> vertices_wanted(NodeContext& ctx, const LocalScene& local) {
+  const int P = ctx.nodes();
+  std::vector<std::uint32_t> ids;
+  for (const auto& t : local.triangles)
+    ids.insert(ids.end(), t.v, t.v + 3);
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  std::vector<std::vector<std::uint32_t>> want(P);
+  for (auto id : ids)
+    want[block_owner(local.scene_vertices, P, id)].push_back(id);
+  Counters w;
+  w.rows_scanned = ids.size(); // building the request lists
+  ctx.charge(w);
+  return want;
+}
+
+} // namespace
+
+void RequestedVertices::exchange(NodeContext& ctx, const LocalScene& local,
+                                 const std::vector<ProjectedVertex>& mine) {
+  auto ph = ctx.phase("request_vertices");
+  const int P = ctx.nodes();
+  const auto want = vertices_wanted(ctx, local);
+  std::vector<Bytes> requests(P);
+  for (int k = 0; k < P; ++k)
+    requests[k] = pack(want[k]);
+  auto asked = coll::alltoallv(ctx.comm(), std::move(requests));
+  std::vector<Bytes> answers(P);
+  for (int k = 0; k < P; ++k) {
+    std::vector<ProjectedVertex> answer;
+    for (auto id : unpack<std::uint32_t>(asked[k]))
+      answer.push_back(mine[id - local.first_vertex]);
+    answers[k] = pack(answer);
+  }
+  auto got = coll::alltoallv(ctx.comm(), std::move(answers));
+  for (int k = 0; k < P; ++k) {
+    auto pvs = unpack<ProjectedVertex>(got[k]);
+    for (std::size_t i = 0; i < pvs.size(); ++i)
+      known[want[k][i]] = pvs[i];
+  }
+  bytes = double(known.size() * (sizeof(ProjectedVertex) + 4)); // + the id as key
+  ctx.charge_packing(std::size_t(bytes));
+}
+
+} // namespace zc::elastic

@@ -1,0 +1,55 @@
+#pragma once
+// Charles, Lefevre, Miguet 1995: the two ways a node learns the projected vertices of its
+// triangles. Each is a small policy the node program (elastic.cpp) is instantiated with:
+//   exchange()  the communication step, one report phase;
+//   at(id)      a projected vertex the node's own triangles use;
+//   Record      what MultiScatter(Triangles) sends per triangle and slice;
+//   record()/triangle()/vertices()  making and reading such a record.
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+#include "algo/elastic_steps.hpp"
+
+namespace zc::elastic {
+
+// §4 MultiBroadcast(Projected Vertices): every node receives all of them, so a triangle travels
+// as its bare record.
+struct BroadcastVertices {
+  using Record = TriRec;
+  std::vector<ProjectedVertex> all; // indexed by vertex id
+  double bytes = 0;                 // held by the node (modelled memory)
+
+  void exchange(NodeContext& ctx, const LocalScene& local,
+                const std::vector<ProjectedVertex>& mine);
+  const ProjectedVertex& at(std::uint32_t id) const { return all[id]; }
+  Record record(const TriRec& t) const { return t; }
+  static const TriRec& triangle(const Record& r) { return r; }
+  void vertices(const Record& r, const ProjectedVertex* p[3]) const {
+    for (int k = 0; k < 3; ++k)
+      p[k] = &all[r.v[k]];
+  }
+};
+
+// §7 (the paper's future work): each node asks the owners for only the vertices its triangles use
+// (request/answer), so a triangle crossing to another slice carries its projected vertices along.
+struct RequestedVertices {
+  struct Record {
+    TriRec t;
+    ProjectedVertex pv[3];
+  };
+  std::unordered_map<std::uint32_t, ProjectedVertex> known; // the needed ones
+  double bytes = 0;
+
+  void exchange(NodeContext& ctx, const LocalScene& local,
+                const std::vector<ProjectedVertex>& mine);
+  const ProjectedVertex& at(std::uint32_t id) const { return known.at(id); }
+  Record record(const TriRec& t) const { return {t, {at(t.v[0]), at(t.v[1]), at(t.v[2])}}; }
+  static const TriRec& triangle(const Record& r) { return r.t; }
+  static void vertices(const Record& r, const ProjectedVertex* p[3]) {
+    for (int k = 0; k < 3; ++k)
+      p[k] = &r.pv[k];
+  }
+};
+
+} // namespace zc::elastic
