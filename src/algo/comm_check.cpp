@@ -16,13 +16,18 @@ Bytes block(int owner, int n) {
   return b;
 }
 
-void comm_check_node(NodeContext& ctx) {
-  Comm& c = ctx.comm();
-  const int P = c.size(), r = c.rank();
-  std::vector<std::string> failures;
-  auto check = [&](bool ok, const std::string& what) {
+// Failed checks, by name.
+class Checks {
+public:
+  void operator()(bool ok, const std::string& what) {
     if (!ok) failures.push_back(what);
-  };
+  }
+  std::vector<std::string> failures;
+};
+
+// The collectives with a root, for three roots.
+void check_rooted(Comm& c, Checks& check) {
+  const int P = c.size(), r = c.rank();
   for (int root : {0, P - 1, P / 2}) {
     const std::string at = " (root " + std::to_string(root) + ")";
     check(coll::broadcast(c, root, r == root ? block(root, 300) : Bytes{}) == block(root, 300),
@@ -44,6 +49,11 @@ void comm_check_node(NodeContext& ctx) {
       check(red == (std::vector<std::int64_t>{P * (P - 1) / 2, P, -P * (P - 1) / 2}),
             "reduce" + at);
   }
+}
+
+// The collectives every node ends with a result of.
+void check_all(Comm& c, Checks& check) {
+  const int P = c.size(), r = c.rank();
   auto all = coll::allgatherv(c, block(r, 7 * r + 1));
   bool ok = int(all.size()) == P;
   for (int k = 0; ok && k < P; ++k)
@@ -70,7 +80,11 @@ void comm_check_node(NodeContext& ctx) {
       a2a = in[std::size_t(k)] == block(k * 100 + r, (k + r) % 5);
     check(a2a, how == coll::AllToAll::Direct ? "alltoallv direct" : "alltoallv pairwise");
   }
-  // Point to point: three messages per (source, tag) on two tags arrive in order, from any source.
+}
+
+void check_point_to_point(Comm& c, Checks& check) {
+  const int P = c.size(), r = c.rank();
+  // Three messages per (source, tag) on two tags arrive in order, from any source.
   constexpr int kTagA = 900, kTagB = 901, kCount = 3;
   if (P > 1) {
     const int next = (r + 1) % P, prev = (r + P - 1) % P;
@@ -95,11 +109,19 @@ void comm_check_node(NodeContext& ctx) {
     c.send(partner, kTagSwap, block(r, 1 << 20));
     check(c.recv(partner, kTagSwap) == block(partner, 1 << 20), "crossing blocking sends of 1 MiB");
   }
+}
+
+void comm_check_node(NodeContext& ctx) {
+  Comm& c = ctx.comm();
+  Checks check;
+  check_rooted(c, check);
+  check_all(c, check);
+  check_point_to_point(c, check);
   coll::barrier(c);
-  ctx.metrics()["comm_check_failures"] = failures;
-  if (!failures.empty())
-    throw std::runtime_error(std::to_string(failures.size()) +
-                             " wrong communications, first: " + failures.front());
+  ctx.metrics()["comm_check_failures"] = check.failures;
+  if (!check.failures.empty())
+    throw std::runtime_error(std::to_string(check.failures.size()) +
+                             " wrong communications, first: " + check.failures.front());
 }
 
 } // namespace

@@ -20,6 +20,14 @@ std::vector<int> recursive_subdivision(const std::vector<std::uint64_t>& row_pix
 // to the least-loaded node (ties: lower node number).
 std::vector<int> heuristic_bin_packing(const std::vector<std::uint64_t>& row_pixels, int nodes);
 
+// The one interface of the three: owner[y] from the machine-wide count of active pixels per
+// scanline (the even split reads only how many scanlines there are).
+struct ScreenPartition {
+  const char* name; // the paper's abbreviation, lower case: "rs", "hbp", "even"
+  std::vector<int> (*owners)(const std::vector<std::uint64_t>& row_pixels, int nodes);
+};
+extern const ScreenPartition kRecursiveSubdivision, kHeuristicBinPacking, kEvenSplit;
+
 // Per-node sum of row_pixels under an assignment.
 std::vector<std::uint64_t> node_loads(const std::vector<std::uint64_t>& row_pixels,
                                       const std::vector<int>& owner, int nodes);

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "algo/elastic_partition.hpp"
-#include "algo/merge_partition.hpp"
+#include "algo/kurc_partition.hpp"
 
 using namespace zc;
 

@@ -1,0 +1,51 @@
+// Kurc, Aykanat, Ozguc §3.2: pixel merging by all-to-all personalised communication (AAPC). Every
+// subregion's pixels go straight to its owner (pairwise e-cube schedule over disjoint paths), then
+// the local and received pixels are z-buffered into the owned scanlines.
+#include "algo/kurc_active_merging.hpp"
+
+#include <algorithm>
+
+#include "comm/collectives.hpp"
+
+namespace zc::kurc {
+
+namespace {
+
+class AllToAllPersonalized : public ActivePixelMerging {
+public:
+  using ActivePixelMerging::ActivePixelMerging;
+  const char* name() const override { return "aapc"; }
+
+protected:
+  void exchange(NodeContext& ctx, const std::vector<int>& owner, MergeMeasures& m,
+                Counters& w) override {
+    Comm& c = ctx.comm();
+    const int P = c.size(), r = c.rank(), H = int(owner.size());
+    std::vector<Bytes> out(P);
+    for (int k = 0; k < P; ++k) {
+      const auto owned_by_k = [&](int y) { return owner[y] == k; };
+      out[k] = serialize_sparse(select_rows(wpa_, owned_by_k));
+      if (k != r && fragmented(H, owned_by_k)) w.bytes_packed += out[k].size();
+    }
+    // Step k of the schedule exchanges with node r ^ k.
+    m.step_bytes.assign(std::size_t(std::max(0, P - 1)), 0.0);
+    for (int k = 1; k < P; ++k)
+      m.step_bytes[k - 1] = double(out[r ^ k].size());
+    auto in = coll::alltoallv(c, std::move(out), coll::AllToAll::Pairwise);
+    mine_ = deserialize_sparse(in[r].data(), in[r].size(), width_, 0, H);
+    for (int k = 0; k < P; ++k) {
+      if (k == r) continue;
+      ActivePixels got = deserialize_sparse(in[k].data(), in[k].size(), width_, 0, H);
+      m.merge_load += got.count();
+      mine_ = merge_active(mine_, got, w);
+    }
+  }
+};
+
+} // namespace
+
+std::unique_ptr<MergeScheme> make_aapc(const ScreenPartition& partition) {
+  return std::make_unique<AllToAllPersonalized>(partition);
+}
+
+} // namespace zc::kurc

@@ -1,0 +1,42 @@
+// Kurc, Aykanat, Ozguc: the local z-buffer and screen sharing common to PAIR and AAPC.
+#include "algo/kurc_active_merging.hpp"
+
+#include <algorithm>
+
+#include "comm/collectives.hpp"
+
+namespace zc::kurc {
+
+void ActivePixelMerging::local_zbuffer(NodeContext& ctx, const NodeRenderer& nr,
+                                       const NodeSpans& spans, Counters& w) {
+  const int W = width_ = nr.width();
+  ctx.alloc(double(W) * 4, "MSA");
+  wpa_ = zbuffer_spans(spans.lists, spans.batch, nr.shade(), W, w);
+  ctx.alloc(double(wpa_.bytes()), "WPA");
+}
+
+// §4.1: per-scanline counts of local foremost pixels, summed over the machine, then shared out.
+std::vector<int> ActivePixelMerging::share_scanlines(NodeContext& ctx, Counters& w) const {
+  const int H = wpa_.y1 - wpa_.y0;
+  std::vector<std::int64_t> counts(H);
+  for (int y = 0; y < H; ++y)
+    counts[y] = wpa_.row_count(y);
+  const auto global = coll::allreduce(ctx.comm(), counts, coll::Op::Sum);
+  const std::vector<std::uint64_t> rows(global.begin(), global.end());
+  w.rows_scanned = std::uint64_t(H) * std::uint64_t(std::max(1, ctx.comm().dimension()) + 1);
+  return partition_.owners(rows, ctx.nodes());
+}
+
+MergeMeasures ActivePixelMerging::merge(NodeContext& ctx, Counters& w) {
+  const std::vector<int> owner = share_scanlines(ctx, w);
+  MergeMeasures m;
+  exchange(ctx, owner, m, w);
+  const int r = ctx.rank();
+  std::uint64_t owned_rows = 0;
+  for (int node : owner)
+    owned_rows += node == r;
+  ctx.alloc(double(owned_rows) * width_ * 11.0, "z-buffer of the owned scanlines");
+  return m;
+}
+
+} // namespace zc::kurc

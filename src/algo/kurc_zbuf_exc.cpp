@@ -1,0 +1,132 @@
+// Kurc, Aykanat, Ozguc: full z-buffer merging (ZBUF-EXC), the paper's baseline. Each node
+// z-buffers its spans into a full-screen frame buffer, then recursive halving over all pixel
+// locations: stage i halves the current band and swaps halves with the neighbour over channel i;
+// every location of the half is compared.
+#include <cstring>
+
+#include "algo/kurc_merge_scheme.hpp"
+#include "raster/zbuffer.hpp"
+
+namespace zc::kurc {
+
+namespace {
+
+// Full-z-buffer message: every location of rows [y0, y1): rgb, depth, id (11 bytes each).
+Bytes pack_locations(const Framebuffer& fb, int y0, int y1) {
+  const std::size_t w = std::size_t(fb.width()), a = std::size_t(y0) * w;
+  const std::size_t n = y1 > y0 ? std::size_t(y1 - y0) * w : 0;
+  Bytes out(11 * n);
+  if (n == 0) return out;
+  std::memcpy(out.data(), fb.rgb().data() + 3 * a, 3 * n);
+  std::memcpy(out.data() + 3 * n, fb.depth().data() + a, 4 * n);
+  std::memcpy(out.data() + 7 * n, fb.ids().data() + a, 4 * n);
+  return out;
+}
+
+// Z-buffers a received message of rows [y0, y1) into fb; returns the locations compared.
+std::size_t merge_locations(Framebuffer& full, const Bytes& in, int y0, int y1) {
+  const std::size_t W = std::size_t(full.width());
+  const std::size_t n = std::size_t(y1 - y0) * W, base = std::size_t(y0) * W;
+  const std::uint8_t* rgb = in.data();
+  const float* z = reinterpret_cast<const float*>(in.data() + 3 * n);
+  std::vector<float> zs(z, z + n);
+  std::vector<std::uint32_t> ids(n);
+  std::memcpy(ids.data(), in.data() + 7 * n, 4 * n);
+  for (std::size_t k = 0; k < n; ++k)
+    if (in_front(zs[k], ids[k], full.depth()[base + k], full.ids()[base + k])) {
+      full.depth()[base + k] = zs[k];
+      full.ids()[base + k] = ids[k];
+      std::memcpy(&full.rgb()[3 * (base + k)], rgb + 3 * k, 3);
+    }
+  return n;
+}
+
+class ZbufExc : public MergeScheme {
+public:
+  const char* name() const override { return "zbuf-exc"; }
+
+  void local_zbuffer(NodeContext& ctx, const NodeRenderer& nr, const NodeSpans& spans,
+                     Counters& w) override {
+    full_ = nr.make_framebuffer(RowSet::all(nr.height()));
+    ctx.alloc(double(full_.bytes()), "full z-buffer");
+    w.pixels_cleared = std::uint64_t(nr.width()) * nr.height();
+    for (int y = 0; y < nr.height(); ++y)
+      for (std::uint32_t s = spans.lists.row_begin[y]; s < spans.lists.row_begin[y + 1]; ++s)
+        draw_span(nr, spans, spans.lists.spans[s], y, w);
+  }
+
+  MergeMeasures merge(NodeContext& ctx, Counters& w) override {
+    Comm& c = ctx.comm();
+    const int r = c.rank();
+    MergeMeasures m;
+    y0_ = 0;
+    y1_ = full_.rows().end;
+    for (int i = 0; i < c.dimension(); ++i) {
+      const int partner = r ^ (1 << i), mid = y0_ + (y1_ - y0_) / 2;
+      const bool top = !(r & (1 << i));                       // keeps the upper half
+      const int sy0 = top ? mid : y0_, sy1 = top ? y1_ : mid; // the half that leaves
+      Bytes out = pack_locations(full_, sy0, sy1);
+      m.step_bytes.push_back(double(out.size()));
+      auto h = c.isend(partner, kTagZbuf + i, std::move(out));
+      Bytes in = c.recv(partner, kTagZbuf + i);
+      h->wait();
+      const int ky0 = top ? y0_ : mid, ky1 = top ? mid : y1_;
+      const std::size_t n = merge_locations(full_, in, ky0, ky1);
+      w.merge_ops += n;
+      m.merge_load += n;
+      y0_ = ky0;
+      y1_ = ky1;
+    }
+    return m;
+  }
+
+  // The covered locations of the node's final band.
+  ActivePixels final_pixels() override {
+    ActivePixels a;
+    a.width = full_.width();
+    a.y0 = y0_;
+    a.y1 = y1_;
+    a.row_begin.assign(std::size_t(y1_ - y0_) + 1, 0);
+    for (int y = y0_; y < y1_; ++y) {
+      for (int x = 0; x < a.width; ++x) {
+        const std::size_t i = full_.index(x, y);
+        if (full_.ids()[i] == kNoTriangle) continue;
+        WinningPixel p{full_.depth()[i], full_.ids()[i], std::uint16_t(x), {}};
+        std::memcpy(p.rgb, &full_.rgb()[3 * i], 3);
+        a.pixels.push_back(p);
+      }
+      a.row_begin[y - y0_ + 1] = std::uint32_t(a.pixels.size());
+    }
+    return a;
+  }
+
+private:
+  // One span of the span lists z-buffered into the full frame buffer.
+  void draw_span(const NodeRenderer& nr, const NodeSpans& spans, const SpanRecord& sp, int y,
+                 Counters& w) {
+    const ScreenTriangle& t = spans.batch.tris[sp.tri];
+    const RowShader rs(t, spans.batch, nr.shade(), y);
+    for (int x = sp.x0; x <= sp.x1; ++x) {
+      const std::size_t i = full_.index(x, y);
+      const float z = rs.depth(x);
+      if (!in_front(z, t.id, full_.depth()[i], full_.ids()[i])) continue;
+      std::uint8_t rgb[3];
+      rs.color(x, rgb, w);
+      full_.test_and_write(i, z, t.id, rgb);
+      ++w.pixels_written;
+    }
+    w.pixels_generated += std::uint64_t(sp.x1 - sp.x0 + 1);
+    w.pixels_tested += std::uint64_t(sp.x1 - sp.x0 + 1);
+  }
+
+  Framebuffer full_;
+  int y0_ = 0, y1_ = 0; // the band of final pixels this node holds after merging
+};
+
+} // namespace
+
+std::unique_ptr<MergeScheme> make_zbuf_exc() {
+  return std::make_unique<ZbufExc>();
+}
+
+} // namespace zc::kurc
