@@ -104,4 +104,48 @@ void SimNetwork::transfer(int src, int dst, double m) {
   node_transfer(src, dst, m);
 }
 
+void SimNetwork::add_hold(std::vector<Hold>& out, std::vector<std::pair<int, int>> chans,
+                          double seconds) const {
+  if (fid_ != Fidelity::Circuit) chans.clear();
+  if (chans.empty() && seconds <= 0) return; // nothing to wait for, nothing to acquire
+  // The global order of acquisition (dimension order on the cube: the e-cube path order), which
+  // rules out deadlock between circuits.
+  if (topo_ == Topology::Cube) {
+    std::stable_sort(chans.begin(), chans.end(), [](auto x, auto y) {
+      const int dx = x.first ^ x.second, dy = y.first ^ y.second;
+      return dx != dy ? dx < dy : x < y;
+    });
+  } else {
+    std::sort(chans.begin(), chans.end());
+  }
+  out.push_back({std::move(chans), std::max(seconds, 0.0)});
+}
+
+// The same stretches and seconds as node_transfer under the analytic and circuit fidelities.
+void SimNetwork::node_holds(int src, int dst, double m, std::vector<Hold>& out) const {
+  if (src == dst) return;
+  auto path = route(topo_, nodes_, src, dst);
+  if (p_.switching == Switching::StoreAndForward) {
+    for (auto c : path)
+      add_hold(out, {c}, p_.startup(m) + m * p_.per_byte_s);
+    return;
+  }
+  const double fixed = p_.startup(m) + (int(path.size()) - 1) * p_.per_hop_s;
+  add_hold(out, std::move(path), fixed + m * p_.per_byte_s);
+}
+
+std::vector<Hold> SimNetwork::holds(int src, int dst, double m) const {
+  std::vector<Hold> out;
+  const int host = nodes_;
+  if (src != host && dst != host) {
+    node_holds(src, dst, m, out);
+    return out;
+  }
+  if (dst == host) node_holds(src, 0, m, out);
+  const std::pair<int, int> link = src == host ? std::pair{host, 0} : std::pair{0, host};
+  add_hold(out, {link}, p_.host_startup_s + m * p_.host_per_byte_s);
+  if (src == host) node_holds(0, dst, m, out);
+  return out;
+}
+
 } // namespace zc

@@ -13,13 +13,25 @@
 
 namespace zc {
 
+// One stretch of a message's way: its channels (circuit fidelity only) held together for `seconds`.
+// A message is a sequence of holds: one per hop under store-and-forward, one for the whole path
+// under circuit switching, plus the host link for the host computer's messages.
+struct Hold {
+  std::vector<std::pair<int, int>> channels; // in acquisition order (dimension order on a cube)
+  double seconds = 0;
+};
+
 class SimNetwork {
 public:
   SimNetwork(const NetworkParams& params, Topology topo, int nodes, Fidelity fidelity,
              std::vector<simgrid::s4u::Host*> hosts);
 
-  // Blocks the calling actor for the duration of the transfer.
+  // Blocks the calling actor for the duration of the transfer (the flow fidelity: SimGrid shares
+  // the links' bandwidth).
   void transfer(int src, int dst, double bytes);
+  // The holds of a message under the analytic and circuit fidelities, whose times zcube computes
+  // itself; channels are listed under circuit only.
+  std::vector<Hold> holds(int src, int dst, double bytes) const;
 
   const NetworkParams& params() const { return p_; }
   Topology topology() const { return topo_; }
@@ -27,6 +39,8 @@ public:
 
 private:
   void node_transfer(int src, int dst, double bytes);
+  void node_holds(int src, int dst, double bytes, std::vector<Hold>& out) const;
+  void add_hold(std::vector<Hold>& out, std::vector<std::pair<int, int>> chans, double s) const;
   void hold(const std::vector<std::pair<int, int>>& channels, double seconds, double flow_bytes,
             int flow_src, int flow_dst);
   simgrid::s4u::MutexPtr channel(int a, int b);

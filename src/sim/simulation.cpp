@@ -195,13 +195,14 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
     hosts.push_back(e.host_by_name(node_host_name(r)));
   hosts.push_back(e.host_by_name(kHostComputerName));
   SimNetwork net(pm.net, pm.topology, P, cfg.fidelity, hosts);
+  Delivery delivery(net, cfg.fidelity, hosts);
 
   std::vector<NodeStats> stats(P + 1);
   std::vector<std::unique_ptr<SimComm>> comms;
   std::vector<std::unique_ptr<SimContext>> ctxs;
   std::vector<FrameImage> images;
   for (int r = 0; r <= P; ++r) {
-    comms.push_back(std::make_unique<SimComm>(r, net, stats[r]));
+    comms.push_back(std::make_unique<SimComm>(r, P, pm.topology, delivery, stats[r]));
     const CostTable cost = r < P ? pm.cost[r] : pm.cost[0];
     const double mem = r < P ? pm.memory[r] : 0.0; // the host computer is not memory-bound
     ctxs.push_back(
@@ -210,10 +211,11 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
 
   std::string failure;
   bool oom = false;
+  std::vector<char> finished(P + 1, 0);
   auto body = [&](int r, const std::function<void(NodeContext&)>& fn) {
-    comms[r]->attach();
     try {
       fn(*ctxs[r]);
+      finished[r] = 1;
     } catch (const OutOfNodeMemory& ex) {
       if (failure.empty()) failure = ex.what();
       oom = true;
@@ -229,6 +231,11 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   if (algo.uses_host) sg::Actor::create("srm", hosts[P], [&] { body(P, algo.host); });
   e.run();
   const double vtime = sg::Engine::get_clock();
+  // A rank still blocked when nothing else can happen waits for a message nobody sends.
+  for (int r = 0; r <= P && failure.empty(); ++r)
+    if (!finished[r] && (r < P || algo.uses_host))
+      failure = (r < P ? "node " + std::to_string(r) : std::string("host computer")) +
+                ": deadlock (still waiting for a message when the simulation ended)";
 
   SimResult res;
   res.ok = failure.empty();

@@ -1,0 +1,236 @@
+#include "sim/delivery.hpp"
+
+#include <algorithm>
+#include <limits>
+
+namespace zc {
+
+namespace sg = simgrid::s4u;
+
+namespace {
+constexpr double kNever = -std::numeric_limits<double>::infinity();
+}
+
+Delivery::Delivery(SimNetwork& net, Fidelity fidelity, std::vector<sg::Host*> hosts)
+    : net_(net), fidelity_(fidelity), hosts_(std::move(hosts)), ranks_(net.nodes() + 1),
+      inboxes_(ranks_), waiters_(ranks_ + 1) {
+  for (auto& w : waiters_)
+    w.wakeup = sg::Semaphore::create(0);
+  if (fidelity_ == Fidelity::Circuit)
+    sg::Actor::create("network", hosts_.back(), [this] { network_loop(); })->daemonize();
+}
+
+// A rank blocks on its own semaphore: a wake-up given between the decision to block and the
+// block itself is kept, not lost (the semaphore counts it). SimGrid wakes a timed wait at
+// now + (deadline - now), which may differ from the deadline in the last bit: the caller treats
+// the deadline itself as reached, so that no wait is ever repeated.
+double Delivery::block(Waiter& w, double deadline) {
+  w.blocked = true;
+  w.deadline = deadline;
+  bool reached = false;
+  if (deadline == kNotYet)
+    w.wakeup->acquire();
+  else
+    reached = w.wakeup->acquire_timeout(std::max(0.0, deadline - sg::Engine::get_clock()));
+  w.blocked = false;
+  return reached ? deadline : kNever;
+}
+
+void Delivery::notify(Waiter& w, const Transit& m) {
+  if (!w.blocked || !(m.arrival < w.deadline)) return;
+  const bool wanted =
+      w.send == &m || (w.receiving && w.tag == m.tag && (w.src == kAnySource || w.src == m.src));
+  if (wanted) wake(w);
+}
+
+// Releasing a semaphore yields to SimGrid, and other actors then run: wake-ups are given only once
+// zcube's state is consistent again (flush_wakeups at the end of each operation).
+void Delivery::wake(Waiter& w) {
+  w.blocked = false; // one wake-up is enough
+  to_wake_.push_back(w.wakeup);
+}
+
+void Delivery::flush_wakeups() {
+  std::vector<simgrid::s4u::SemaphorePtr> now;
+  now.swap(to_wake_);
+  for (auto& s : now)
+    s->release();
+}
+
+void Delivery::arrived(Transit& m) {
+  m.holds.clear();
+  m.holds.shrink_to_fit();
+  inboxes_[m.dst].arrived(m);
+  notify(waiters_[m.dst], m);
+  notify(waiters_[m.src], m);
+}
+
+TransitPtr Delivery::post(int src, int dst, int tag, Bytes data) {
+  auto m = std::make_shared<Transit>();
+  m->src = src;
+  m->dst = dst;
+  m->tag = tag;
+  m->data = std::move(data);
+  m->sent_at = sg::Engine::get_clock();
+  const double bytes = double(m->data.size());
+  if (fidelity_ == Fidelity::Analytic) {
+    double t = m->sent_at;
+    for (const Hold& h : net_.holds(src, dst, bytes))
+      t += h.seconds;
+    m->arrival = t;
+    inboxes_[dst].push(m);
+    notify(waiters_[dst], *m);
+  } else if (fidelity_ == Fidelity::Circuit) {
+    m->holds = net_.holds(src, dst, bytes);
+    inboxes_[dst].push(m);
+    advance(m, m->sent_at);
+  } else {
+    inboxes_[dst].push(m);
+    sg::Actor::create("msg", hosts_[src], [this, m, bytes] {
+      net_.transfer(m->src, m->dst, bytes);
+      m->arrival = sg::Engine::get_clock();
+      arrived(*m);
+      flush_wakeups();
+    });
+  }
+  flush_wakeups();
+  return m;
+}
+
+void Delivery::await_arrival(int self, const Transit& m) {
+  Waiter& w = waiters_[self];
+  double reached = kNever;
+  while (!(m.arrival <= std::max(sg::Engine::get_clock(), reached))) {
+    w.send = &m;
+    reached = block(w, m.arrival);
+    w.send = nullptr;
+  }
+}
+
+TransitPtr Delivery::receive(int self, int src, int tag) {
+  Waiter& w = waiters_[self];
+  double reached = kNever;
+  for (;;) {
+    double wake = kNotYet;
+    if (auto m = inboxes_[self].take(src, tag, std::max(sg::Engine::get_clock(), reached), wake))
+      return m;
+    w.receiving = true;
+    w.src = src;
+    w.tag = tag;
+    reached = block(w, wake);
+    w.receiving = false;
+  }
+}
+
+// --- circuit fidelity ----------------------------------------------------------------------------
+
+void Delivery::schedule(Event e) {
+  Waiter& net = waiters_.back();
+  if (net.blocked && e.time < net.deadline) wake(net);
+  events_.push(std::move(e));
+}
+
+// A release matters only to a waiter, and can be dated only once the owner holds all its channels.
+void Delivery::schedule_release(std::uint64_t id, Channel& c) {
+  if (c.waiters.empty() || c.free_at == kNotYet || c.release_pending) return;
+  c.release_pending = true;
+  schedule({c.free_at, event_seq_++, nullptr, id});
+}
+
+// The first waiter gets the channel (a SimGrid mutex's FIFO hand-over).
+void Delivery::hand_over(Channel& c, std::vector<TransitPtr>& woken) {
+  if (c.waiters.empty()) {
+    c.owner = nullptr;
+    return;
+  }
+  TransitPtr w = std::move(c.waiters.front());
+  c.waiters.pop_front();
+  c.owner = w.get();
+  c.free_at = kNotYet;
+  ++w->next_channel;
+  woken.push_back(std::move(w));
+}
+
+// Message m, at time t (the current virtual time), acquires the channels of its current hold that
+// it does not have yet; once it has them all, its end of hold is known.
+void Delivery::advance(const TransitPtr& m, double t) {
+  if (m->holds.empty()) { // to itself
+    m->arrival = t;
+    arrived(*m);
+    return;
+  }
+  for (;;) {
+    const Hold& h = m->holds[m->stage];
+    while (m->next_channel < h.channels.size()) {
+      const std::uint64_t id = channel_id(h.channels[m->next_channel]);
+      Channel& c = channels_[id];
+      const bool free = !c.owner || (c.free_at <= t && c.waiters.empty());
+      if (!free) {
+        c.waiters.push_back(m);
+        schedule_release(id, c);
+        return;
+      }
+      c.owner = m.get();
+      c.free_at = kNotYet;
+      ++m->next_channel;
+    }
+    const double end = t + h.seconds;
+    for (auto ch : h.channels) {
+      const std::uint64_t id = channel_id(ch);
+      Channel& c = channels_[id];
+      c.free_at = end;
+      schedule_release(id, c);
+    }
+    if (m->stage + 1 == m->holds.size()) {
+      m->arrival = end;
+      arrived(*m);
+      return;
+    }
+    ++m->stage;
+    m->next_channel = 0;
+    if (!h.channels.empty() || !m->holds[m->stage].channels.empty()) {
+      schedule({end, event_seq_++, m, 0});
+      return;
+    }
+    t = end; // no channel before or after: nothing to decide at `end`
+  }
+}
+
+void Delivery::process(const Event& e) {
+  std::vector<TransitPtr> woken;
+  if (e.next_stage) {
+    // Release the previous hold's channels in reverse order, continue, then the waiters go on.
+    const Transit& m = *e.next_stage;
+    const auto& prev = m.holds[m.stage - 1].channels;
+    for (auto it = prev.rbegin(); it != prev.rend(); ++it) {
+      Channel& c = channels_[channel_id(*it)];
+      if (c.owner == &m) hand_over(c, woken);
+    }
+    advance(e.next_stage, e.time);
+  } else {
+    Channel& c = channels_[e.channel];
+    c.release_pending = false;
+    if (c.owner && c.free_at <= e.time)
+      hand_over(c, woken);
+    else
+      schedule_release(e.channel, c); // a new owner since: its own release, once dated
+  }
+  for (const auto& w : woken)
+    advance(w, e.time);
+}
+
+void Delivery::network_loop() {
+  Waiter& self = waiters_.back();
+  double reached = kNever;
+  for (;;) {
+    while (!events_.empty() && events_.top().time <= std::max(sg::Engine::get_clock(), reached)) {
+      const Event e = events_.top();
+      events_.pop();
+      process(e);
+    }
+    flush_wakeups();
+    reached = block(self, events_.empty() ? kNotYet : events_.top().time);
+  }
+}
+
+} // namespace zc

@@ -1,0 +1,86 @@
+#pragma once
+// How simulated messages travel and are received, without a SimGrid actor per message. Under the
+// analytic and circuit fidelities zcube computes every arrival time itself: a message waits in its
+// destination's Inbox until its arrival, and ranks block on a SimGrid semaphore (with a timeout)
+// until the earliest arrival that concerns them (or until a notification). Circuit contention is
+// decided by zcube's own channel bookkeeping: the channels of a hold are acquired one by one in the
+// global order, each granted first come, first served, and held for the whole hold (DESIGN §5); a
+// single daemon actor wakes up at the releases that someone waits for. Only the flow fidelity needs
+// SimGrid's bandwidth sharing, so there one actor per message crosses the links.
+#include <cstdint>
+#include <deque>
+#include <queue>
+#include <unordered_map>
+#include <vector>
+
+#include <simgrid/s4u.hpp>
+
+#include "sim/inbox.hpp"
+#include "sim/sim_network.hpp"
+#include "sim/transit.hpp"
+
+namespace zc {
+
+class Delivery {
+public:
+  Delivery(SimNetwork& net, Fidelity fidelity, std::vector<simgrid::s4u::Host*> hosts);
+
+  // Sends at the current virtual time; the message's arrival is set now or later.
+  TransitPtr post(int src, int dst, int tag, Bytes data);
+  // Blocks rank `self` until message m has arrived (a sender's completion).
+  void await_arrival(int self, const Transit& m);
+  // Blocks rank `self` until a message from src (or kAnySource) with this tag can be taken.
+  TransitPtr receive(int self, int src, int tag);
+
+private:
+  // One per rank: where its actor blocks, and what it waits for (to notify only when it matters).
+  struct Waiter {
+    simgrid::s4u::SemaphorePtr wakeup;
+    bool blocked = false, receiving = false;
+    int src = 0, tag = 0;
+    const Transit* send = nullptr;
+    double deadline = kNotYet;
+  };
+  struct Channel {
+    const Transit* owner = nullptr;
+    double free_at = 0; // the owner's release, kNotYet while it is still acquiring
+    std::deque<TransitPtr> waiters;
+    bool release_pending = false;
+  };
+  struct Event {
+    double time;
+    std::uint64_t seq;
+    TransitPtr next_stage; // this message releases its previous hold and starts the next one
+    std::uint64_t channel; // else: this channel's owner releases it
+    bool operator>(const Event& o) const { return time != o.time ? time > o.time : seq > o.seq; }
+  };
+
+  double block(Waiter& w, double deadline); // returns the deadline if reached, else -inf
+  void notify(Waiter& w, const Transit& m);
+  void wake(Waiter& w);
+  void flush_wakeups();
+  void arrived(Transit& m);
+  std::uint64_t channel_id(std::pair<int, int> c) const {
+    return std::uint64_t(c.first) * std::uint64_t(ranks_) + std::uint64_t(c.second);
+  }
+  // Circuit fidelity.
+  void advance(const TransitPtr& m, double t);
+  void schedule(Event e);
+  void schedule_release(std::uint64_t id, Channel& c);
+  void hand_over(Channel& c, std::vector<TransitPtr>& woken);
+  void process(const Event& e);
+  void network_loop();
+
+  SimNetwork& net_;
+  Fidelity fidelity_;
+  std::vector<simgrid::s4u::Host*> hosts_;
+  int ranks_;
+  std::vector<Inbox> inboxes_;
+  std::vector<Waiter> waiters_; // ranks, then the network actor
+  std::unordered_map<std::uint64_t, Channel> channels_;
+  std::priority_queue<Event, std::vector<Event>, std::greater<Event>> events_;
+  std::uint64_t event_seq_ = 0;
+  std::vector<simgrid::s4u::SemaphorePtr> to_wake_;
+};
+
+} // namespace zc

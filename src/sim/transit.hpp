@@ -1,0 +1,26 @@
+#pragma once
+// A message on its way through the simulated machine: the payload, and when it is fully received.
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <vector>
+
+#include "comm/comm.hpp"
+#include "sim/sim_network.hpp"
+
+namespace zc {
+
+constexpr double kNotYet = std::numeric_limits<double>::infinity();
+
+struct Transit {
+  int src, dst, tag;
+  Bytes data;
+  double sent_at = 0;
+  double arrival = kNotYet; // virtual time of full reception, kNotYet while contention decides it
+  // Progress through the circuit fidelity's holds (Delivery's channel bookkeeping).
+  std::vector<Hold> holds;
+  std::size_t stage = 0, next_channel = 0;
+};
+using TransitPtr = std::shared_ptr<Transit>;
+
+} // namespace zc
