@@ -117,6 +117,16 @@ void hierarchical_merge(NodeContext& ctx, Framebuffer fb);
 // Strips or interleaved rows pasted at node 0 (colour only), which delivers the picture.
 void paste_at_node0(NodeContext& ctx, const NodeRenderer& nr, const Framebuffer& part);
 
+// The strip methods' decomposition: node k of P owns rows [kH/P, (k+1)H/P) (some strips are empty
+// when P > H), and row y lies in strip ((y+1)P - 1) / H, the last strip starting at or before y
+// (yP/H is not: with H = 77 and P = 2, row 38 starts strip 1 but 38*2/77 = 0).
+inline RowSet strip_rows(int k, int P, int H) {
+  return RowSet::band(int(std::int64_t(k) * H / P), int(std::int64_t(k + 1) * H / P));
+}
+inline int strip_of_row(int y, int P, int H) {
+  return int(((std::int64_t(y) + 1) * P - 1) / H);
+}
+
 // The host's end-of-work marker: an empty message.
 inline bool is_end(const Bytes& b) {
   return b.empty();

@@ -47,9 +47,7 @@ void host_broadcast_node(NodeContext& ctx) {
     if (r == 0) all = c.recv(c.host_rank(), kTagHost);
     all = coll::broadcast(c, 0, std::move(all));
   }
-  const RowSet rows = lines == "strips" ? RowSet::band(int(std::int64_t(r) * H / P),
-                                                       int(std::int64_t(r + 1) * H / P))
-                                        : RowSet::interleaved(r, P, H);
+  const RowSet rows = lines == "strips" ? strip_rows(r, P, H) : RowSet::interleaved(r, P, H);
   Framebuffer fb = nr.make_framebuffer(rows);
   ctx.alloc(double(fb.bytes() + all.size()), "rows frame buffer and scene");
   {

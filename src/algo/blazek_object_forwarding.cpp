@@ -20,8 +20,8 @@ void object_forwarding_node(NodeContext& ctx) {
     throw UsageError("--forward must be object or polygons");
   const NodeRenderer nr(ctx.scene());
   const int H = nr.height();
-  auto strip_of = [&](int y) { return int(std::int64_t(y) * P / H); };
-  const RowSet mine = RowSet::band(int(std::int64_t(r) * H / P), int(std::int64_t(r + 1) * H / P));
+  auto strip_of = [&](int y) { return strip_of_row(y, P, H); };
+  const RowSet mine = strip_rows(r, P, H);
   Framebuffer fb = nr.make_framebuffer(mine);
   ctx.alloc(double(fb.bytes()), "strip frame buffer");
   std::uint64_t forwarded = 0;

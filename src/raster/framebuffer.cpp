@@ -27,6 +27,7 @@ void Framebuffer::clear(glm::vec3 background) {
     return;
   }
   rgb_.resize(3 * n);
+  if (n == 0) return; // a band of zero rows (more nodes than rows) has no first row to copy
   const std::size_t row = 3 * std::size_t(width_);
   for (std::size_t i = 0; i < std::size_t(width_); ++i)
     std::memcpy(&rgb_[3 * i], bg, 3);

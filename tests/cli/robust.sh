@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# Reproducers of the hostile review (issue 17): extreme settings and odd combinations either run
+# correctly (exit 0), fail the run with one line (exit 1), or are refused up front as usage errors
+# (exit 2, one line, before any simulation). Never a crash, a hang or a wrong answer with exit 0.
+set -u
+zcube=$1
+src=$2
+fail=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+run() { # expected-exit name expected-substring command...
+  local want_rc=$1 name=$2 want=$3
+  shift 3
+  timeout 120 "$@" >"$tmp/out" 2>"$tmp/err"
+  local rc=$? lines
+  lines=$(grep -vc '^\[' "$tmp/err") # SimGrid's own bracketed log lines aside
+  if [ "$rc" -ne "$want_rc" ] || { [ "$want_rc" -ne 0 ] && [ "$lines" -ne 1 ]; } ||
+    ! grep -q -- "$want" "$tmp/err" "$tmp/out"; then
+    echo "FAIL $name: exit $rc (want $want_rc), $lines stderr lines: $(head -c 400 "$tmp/err")"
+    fail=1
+  else
+    echo "ok   $name (exit $rc): $(grep -v '^\[' "$tmp/err" | head -1)"
+  fi
+}
+ok() { run 0 "$@"; }
+usage() { run 2 "$@"; }
+failed() { run 1 "$@"; }
+
+# Zero-row bands with a coloured background (Framebuffer::clear read row 0 of nothing).
+echo '{"background":[0,0,1],"objects":["cube"]}' >"$tmp/blue.json"
+for a in elastic object-forwarding host-broadcast; do
+  ok "zero-row-band-$a" "identical to the sequential renderer's: true" \
+    "$zcube" run --algorithm "$a" --nodes 4 --size 8x2 --scene "$tmp/blue.json" --memory 64MiB
+done
+ok primitives-16-nodes "identical to the sequential renderer's: true" \
+  "$zcube" run --algorithm elastic --nodes 16 --size 64x64 --scene "$src/scenes/primitives.json"
+
+# Object forwarding's strips when the height is not a multiple of P (rows at strip starts were sent
+# to the strip before): every P from 2 to 32 at 301x77, and 512x500 at P = 8 and 32.
+same="identical to the sequential renderer's: true"
+teapot=$src/scenes/teapot.json
+for P in $(seq 2 32); do
+  ok "object-forwarding-301x77-P$P" "$same" "$zcube" run --scene "$teapot" --size 301x77 \
+    --algorithm object-forwarding --forward polygons --nodes "$P" --topology ring --memory 64MiB
+done
+for P in 8 32; do
+  for f in object polygons; do
+    ok "object-forwarding-512x500-P$P-$f" "$same" "$zcube" run --scene "$teapot" --size 512x500 \
+      --algorithm object-forwarding --forward "$f" --nodes "$P" --memory 64MiB
+  done
+done
+
+exit $fail
