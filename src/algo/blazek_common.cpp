@@ -243,6 +243,7 @@ void hierarchical_merge(NodeContext& ctx, Framebuffer fb) {
       c.send(r ^ bit, kTagMerge, std::move(out));
       return;
     }
+    if ((r ^ bit) >= c.size()) continue; // no partner when P is not a power of two (a ring of 3)
     Bytes in = c.recv(r ^ bit, kTagMerge);
     ctx.alloc(double(in.size()), "merge receive buffer");
     Framebuffer other(fb.width(), fb.rows(), glm::vec3(0));

@@ -111,7 +111,8 @@ void render_host_messages_then_merge(NodeContext& ctx, bool tessellates, bool ac
 
 // Algorithm 4 / Figure 10: log2 P steps; at step i the active nodes with bit i set send their
 // frame buffer to the neighbour over channel i, which keeps the nearer pixel. Node 0 ends with
-// the merged picture, which it delivers.
+// the merged picture, which it delivers. Any P: a node whose partner would be P or above skips
+// that step (a binomial tree).
 void hierarchical_merge(NodeContext& ctx, Framebuffer fb);
 
 // Strips or interleaved rows pasted at node 0 (colour only), which delivers the picture.
