@@ -41,13 +41,14 @@ std::vector<std::string_view> split_lines(const std::string& s) {
   return out;
 }
 
-long long count_line(Lines& in, const char* what, long long max) {
+long long count_line(Lines& in, const char* what, long long max, int* line = nullptr) {
   int ln = 0;
   auto l = in.get(ln, what);
   auto v = text::to_int(l);
   if (!v || *v < 1 || *v > max)
     throw InputError(in.path, ln,
                      std::string("expected ") + what + ", got '" + std::string(l) + "'");
+  if (line) *line = ln;
   return *v;
 }
 
@@ -67,11 +68,19 @@ glm::dvec3 point_line(Lines& in, bool commas) {
   return p;
 }
 
-std::vector<BezierPatch> parse(const std::string& path) {
-  const std::string s = text::read_file(path);
+} // namespace
+
+std::vector<BezierPatch> parse_bezier(const std::string& s, const std::string& path) {
   Lines in{split_lines(s), 0, path};
   const bool bpt = path.size() >= 4 && text::lower(path.substr(path.size() - 4)) == ".bpt";
+  // Counts are checked against the lines left before anything is allocated: each patch needs 17
+  // lines (.bpt) or one (teaset), each control point one, so a short file cannot ask for gigabytes.
+  const long long lines_left = (long long)in.lines.size();
   const long long n = count_line(in, "the patch count", 1000000);
+  if (n > lines_left / (bpt ? 17 : 1))
+    throw InputError(path, 1,
+                     "truncated file: " + std::to_string(n) + " patches announced but only " +
+                         std::to_string(lines_left) + " lines");
   std::vector<BezierPatch> patches(std::size_t(n), BezierPatch{});
   if (bpt) {
     for (auto& pa : patches) {
@@ -98,7 +107,13 @@ std::vector<BezierPatch> parse(const std::string& path) {
       }
       idx_line[q] = ln;
     }
-    const long long m = count_line(in, "the control-point count", 100000000);
+    int m_line = 0;
+    const long long m = count_line(in, "the control-point count", 100000000, &m_line);
+    if (m > lines_left - (long long)in.next)
+      throw InputError(path, m_line,
+                       "truncated file: " + std::to_string(m) +
+                           " control points announced but only " +
+                           std::to_string(lines_left - (long long)in.next) + " lines follow");
     std::vector<glm::dvec3> pts(static_cast<std::size_t>(m));
     for (auto& p : pts)
       p = point_line(in, true);
@@ -114,6 +129,8 @@ std::vector<BezierPatch> parse(const std::string& path) {
   }
   return patches;
 }
+
+namespace {
 
 // Bernstein weights at parameter k/level, computed from t and s = 1 - t = (level-k)/level so that
 // the weights at k and at level-k are exact mirror images (shared patch edges match bit for bit).
@@ -181,7 +198,7 @@ std::shared_ptr<const std::vector<BezierPatch>> read_bezier_file(const std::stri
     auto it = cache.find(path);
     if (it != cache.end()) return it->second;
   }
-  auto p = std::make_shared<const std::vector<BezierPatch>>(parse(path));
+  auto p = std::make_shared<const std::vector<BezierPatch>>(parse_bezier(text::read_file(path), path));
   std::lock_guard<std::mutex> lock(mu);
   cache.emplace(path, p);
   return p;

@@ -19,6 +19,10 @@ struct BezierPatch {
   glm::dvec3 p[4][4]; // p[i][j]: i along u, j along v
 };
 
+// Parses the text of a patch file; `path` names it in errors and its extension (.bpt) picks the
+// form. Throws InputError(path, line, reason) for any malformed text.
+std::vector<BezierPatch> parse_bezier(const std::string& text, const std::string& path);
+
 // Throws InputError(path, line, reason) for any malformed file. Parsed files are cached (a node
 // re-tessellating many copies of one object reads the file once).
 std::shared_ptr<const std::vector<BezierPatch>> read_bezier_file(const std::string& path);
