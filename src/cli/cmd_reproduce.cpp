@@ -21,7 +21,7 @@ static int cmd_reproduce(std::vector<std::string> args) {
   o.out = "results";
   o.jobs = default_jobs();
   std::string which = "all";
-  bool no_plots = false;
+  bool no_plots = false, no_calibration = false;
   app.add_option("paper", which, "kurc, charles (charles95), blazek (blazek91) or all")
       ->check(CLI::IsMember({"kurc", "charles", "blazek", "charles95", "blazek91", "all"}))
       ->capture_default_str();
@@ -33,8 +33,11 @@ static int cmd_reproduce(std::vector<std::string> args) {
           ->capture_default_str();
   app.add_flag("--full", o.full, "Blazek's whole grid: 1..2048 spheres (about an hour)");
   app.add_flag("--no-plots", no_plots, "skip the PNG plots");
+  app.add_flag("--no-calibration", no_calibration,
+               "skip the calibration's fit and validation (results/calibration/)");
   if (int rc = parse(app, args); rc >= 0) return rc;
   o.plots = !no_plots;
+  o.calibration = !no_calibration;
   if (which == "charles95") which = "charles"; // the names of DESIGN §3
   if (which == "blazek91") which = "blazek";
   if (which != "all") o.papers = {which};

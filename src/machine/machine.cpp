@@ -3,6 +3,7 @@
 #include <iterator>
 
 #include "machine/calibrated_costs.hpp"
+#include "machine/cpu_model.hpp"
 #include "util/error.hpp"
 
 namespace zc {
@@ -76,39 +77,22 @@ std::vector<double> group_seconds(const CostTable& prices, const std::vector<Cos
   return out;
 }
 
+std::vector<double> calibrated_group_scale() {
+  static_assert(std::size(calibrated::kGroupScale) == 6, "one multiplier per cost group");
+  return std::vector<double>(std::begin(calibrated::kGroupScale),
+                             std::end(calibrated::kGroupScale));
+}
+
+// The calibration's multipliers correct the operation mixes (what the compiled program does), which
+// both CPUs share; each CPU's instruction clocks are its own and are not fitted.
 CostTable i386_costs() {
-  static_assert(std::size(calibrated::kI386GroupScale) == 6, "one multiplier per cost group");
-  return scale_groups(prior_i386_costs(),
-                      std::vector<double>(std::begin(calibrated::kI386GroupScale),
-                                          std::end(calibrated::kI386GroupScale)));
+  return cpu_seconds(cpu_model("i80386"), calibrated_group_scale());
 }
-
 CostTable i860_costs() {
-  return i386_costs().scaled(1.0 / calibrated::kI860SpeedRatio);
+  return cpu_seconds(cpu_model("i860xr"), calibrated_group_scale());
 }
-
-// Placeholder CPU costs, the calibration's starting point, sized for compiled C on a 16 MHz
-// 80386 + 80387 node.
 CostTable prior_i386_costs() {
-  CostTable t;
-  t.vertices_transformed = 120e-6; // 4x4 matrix-vector product + Gouraud cosine, ~40 flops
-  t.triangles_in = 20e-6;
-  t.triangles_culled = 10e-6;
-  t.triangles_clipped = 200e-6;
-  t.triangles_setup = 250e-6; // edge functions + 4 attribute planes
-  t.spans = 40e-6;
-  t.pixels_generated = 12e-6;
-  t.pixels_tested = 4e-6;
-  t.pixels_written = 6e-6;
-  t.pixels_final = 0;
-  t.texels_fetched = 8e-6;
-  t.pixels_cleared = 1.5e-6;
-  t.merge_ops = 8e-6;
-  t.bytes_packed = 0.25e-6;
-  t.triangles_estimated = 15e-6;
-  t.rows_scanned = 3e-6;
-  t.triangles_tessellated = 60e-6; // vertex + normal generation of one polygon
-  return t;
+  return cpu_seconds(cpu_model("i80386"));
 }
 
 namespace {
@@ -128,6 +112,7 @@ std::vector<MachineSpec> make_specs() {
     m.net.switching = Switching::Circuit;
     m.net.host_startup_s = 1e-3;  // SRM link: assumption, Ethernet-class
     m.net.host_per_byte_s = 1e-6; // ~1 MB/s: assumption
+    m.cpu = "i80386";
     m.cost = i386_costs();
     m.cost_calibrated = calibrated::kFitted;
     v.push_back(m);
@@ -145,6 +130,7 @@ std::vector<MachineSpec> make_specs() {
     m.net.switching = Switching::Circuit;
     m.net.host_startup_s = 1e-3;
     m.net.host_per_byte_s = 1e-6;
+    m.cpu = "i860xr";
     m.cost = i860_costs();
     m.cost_calibrated = calibrated::kFitted;
     v.push_back(m);
@@ -162,6 +148,7 @@ std::vector<MachineSpec> make_specs() {
     m.net.switching = Switching::StoreAndForward;
     m.net.host_startup_s = 1e-3;
     m.net.host_per_byte_s = 1e-6;
+    m.cpu = "i860xr";
     m.cost = i860_costs();
     m.cost_calibrated = calibrated::kFitted;
     v.push_back(m);

@@ -53,7 +53,8 @@ struct MachineSpec {
   std::string description; // one line for the XML and the README
   double memory_bytes = 0; // per node
   NetworkParams net;
-  CostTable cost;
+  std::string cpu; // the CPU model (machine/cpu_model.hpp) its cost table comes from
+  CostTable cost;  // seconds per counted operation
   bool cost_calibrated = false;
   std::string generated_by; // the platform file's provenance line; empty: `zcube platform ...`
 };
@@ -73,10 +74,12 @@ CostTable scale_groups(const CostTable& t, const std::vector<CostGroup>& groups,
 // calibration's and the probe's linear fits).
 std::vector<double> group_seconds(const CostTable& prices, const std::vector<CostGroup>& groups,
                                   const Counters& work);
-// The placeholder table the calibration starts from: compiled C on a 16 MHz 80386 + 80387 node.
+// The physical estimate of the iPSC/2's 80386 + 80387 table (machine/cpu_model.hpp), the point the
+// calibration starts from and is bounded around.
 CostTable prior_i386_costs();
-// The calibrated tables (calibrated_costs.hpp): the iPSC/2's 80386, and the i860 of the iPSC/860
-// and the Volvox (the same 40 MHz part: one table, by clock and architecture ratio).
+// The calibrated tables: the physical estimates of the 80386 (iPSC/2) and of the i860 XR (iPSC/860,
+// Volvox), each cost group scaled by the multipliers fitted on the iPSC/2 (calibrated_costs.hpp).
+std::vector<double> calibrated_group_scale();
 CostTable i386_costs();
 CostTable i860_costs();
 

@@ -35,7 +35,7 @@ std::string platform_xml(const MachineSpec& spec, int nodes, Topology topo) {
     << "     " << spec.description << ".\n"
     << "     Figures and their sources: ../shared/MACHINES.md. CPU costs are seconds per counted\n"
     << "     renderer operation"
-    << (spec.cost_calibrated ? " (calibrated)" : " (uncalibrated placeholders)") << ". -->\n"
+    << (spec.cost_calibrated ? " (calibrated)" : " (physical estimates, not calibrated)") << ". -->\n"
     << "<platform version=\"4.1\">\n"
     << "  <zone id=\"" << spec.name << "-" << topology_name(topo) << "-" << nodes
     << "\" routing=\"Full\">\n";

@@ -103,3 +103,63 @@ std::vector<double> nnls(const Matrix& A, const std::vector<double>& b) {
 }
 
 } // namespace zc
+
+namespace zc {
+
+std::vector<double> bounded_lsq(const Matrix& A, const std::vector<double>& b,
+                                const std::vector<double>& lo, const std::vector<double>& hi) {
+  if (A.empty() || A.size() != b.size())
+    throw std::invalid_argument("bounded_lsq: rows of A and b differ");
+  const std::size_t n = A[0].size();
+  if (lo.size() != n || hi.size() != n) throw std::invalid_argument("bounded_lsq: bounds size");
+  for (std::size_t j = 0; j < n; ++j)
+    if (!(lo[j] <= hi[j])) throw std::invalid_argument("bounded_lsq: empty bound");
+  auto cost = [&](const std::vector<double>& x) {
+    double s = 0;
+    for (std::size_t r = 0; r < A.size(); ++r) {
+      double e = -b[r];
+      for (std::size_t j = 0; j < n; ++j)
+        e += A[r][j] * x[j];
+      s += e * e;
+    }
+    return s;
+  };
+  // The problem is convex: its minimum is the unconstrained minimum over the free variables of
+  // one assignment of each variable to {free, at lo, at hi}. n is tiny (the cost groups), so every
+  // assignment is tried (3^n) and the best feasible one kept.
+  std::vector<double> best;
+  double best_cost = std::numeric_limits<double>::infinity();
+  std::vector<int> state(n, 0); // 0 free, 1 lo, 2 hi
+  for (;;) {
+    std::vector<double> rhs(b);
+    std::vector<bool> freeset(n);
+    for (std::size_t j = 0; j < n; ++j) {
+      freeset[j] = state[j] == 0;
+      if (state[j] == 0) continue;
+      const double v = state[j] == 1 ? lo[j] : hi[j];
+      for (std::size_t r = 0; r < A.size(); ++r)
+        rhs[r] -= A[r][j] * v;
+    }
+    std::vector<double> x = ls_on(A, rhs, freeset);
+    bool feasible = true;
+    for (std::size_t j = 0; j < n; ++j) {
+      if (state[j] == 1) x[j] = lo[j];
+      if (state[j] == 2) x[j] = hi[j];
+      if (x[j] < lo[j] - 1e-12 || x[j] > hi[j] + 1e-12) feasible = false;
+    }
+    if (feasible) {
+      const double c = cost(x);
+      if (c < best_cost) {
+        best_cost = c;
+        best = x;
+      }
+    }
+    std::size_t j = 0;
+    while (j < n && ++state[j] == 3)
+      state[j++] = 0;
+    if (j == n) break;
+  }
+  return best;
+}
+
+} // namespace zc

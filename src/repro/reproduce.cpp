@@ -6,6 +6,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "repro/calibrate.hpp"
 #include "repro/plot_script.hpp"
 #include "repro/progress.hpp"
 #include "repro/table.hpp"
@@ -134,6 +135,13 @@ int reproduce(const ReproduceOptions& o) {
     const std::string dir = p.name.empty() ? o.out : o.out + "/" + p.name;
     std::filesystem::create_directories(dir);
     summaries += p.write(r, dir);
+  }
+  if (all && o.calibration) {
+    CalibrationOptions c;
+    c.root = o.root;
+    c.jobs = o.jobs;
+    c.verbose = o.verbose;
+    write_calibration_results(calibrate(c), o.out + "/calibration");
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (all) write_text(o.out + "/README.md", top_readme(o, wall, cfgs.size(), summaries));

@@ -29,6 +29,9 @@ struct ReproduceOptions {
                                             const std::function<void(const BatchProgress&)>&)>
       runner;
   bool write = true;
+  // With every paper: also the calibration's fit and its validation (results/calibration/:
+  // leave-one-scene-out folds, Charles et al.'s speed-ups predicted, plausibility of every cost).
+  bool calibration = true;
 };
 
 struct ReproPoint {
