@@ -1,35 +1,24 @@
 #include "raster/image_io.hpp"
 
 #include <cstdio>
-#include <filesystem>
 #include <memory>
 #include <stdexcept>
 
-#include <OpenImageIO/imageio.h>
 #include <openssl/evp.h>
+
+#include "util/image_module.hpp"
 
 namespace zc {
 
-static void write_image(const std::string& path, int w, int h, int channels, OIIO::TypeDesc type,
-                        const void* data) {
-  const auto parent = std::filesystem::path(path).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent);
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) throw std::runtime_error(path + ": cannot write image: " + OIIO::geterror());
-  OIIO::ImageSpec spec(w, h, channels, type);
-  if (!out->open(path, spec) || !out->write_image(type, data) || !out->close())
-    throw std::runtime_error(path + ": cannot write image: " + out->geterror());
-}
-
 void write_png(const Framebuffer& fb, const std::string& path) {
-  write_image(path, fb.width(), fb.rows().count(), 3, OIIO::TypeDesc::UINT8, fb.rgb().data());
+  image_module::write(path, fb.width(), fb.rows().count(), 3, false, fb.rgb().data());
 }
 
 void write_depth_exr(const Framebuffer& fb, const std::string& path) {
   std::vector<float> d(fb.depth());
   for (std::size_t i = 0; i < d.size(); ++i)
     if (fb.ids()[i] == kNoTriangle) d[i] = 1.0f;
-  write_image(path, fb.width(), fb.rows().count(), 1, OIIO::TypeDesc::FLOAT, d.data());
+  image_module::write(path, fb.width(), fb.rows().count(), 1, true, d.data());
 }
 
 std::string image_sha256(const Framebuffer& fb) {
