@@ -27,11 +27,8 @@ void check_scene(const Scene& s) {
 std::vector<Poly> host_polygons(const Scene& s, std::size_t o, Counters& c) {
   const ObjectDesc& d = s.objects[o];
   std::vector<Poly> out;
-  for (std::uint32_t i = 0; i < d.triangle_count; ++i) {
-    const std::uint32_t id = d.first_triangle + i;
-    const Triangle& t = s.triangles[id];
-    out.push_back({id, t.material, {s.vertices[t.v[0]], s.vertices[t.v[1]], s.vertices[t.v[2]]}});
-  }
+  for (std::uint32_t i = 0; i < d.triangle_count; ++i)
+    out.push_back(world_polygon(s, d.first_triangle + i));
   c.triangles_tessellated += d.triangle_count;
   return out;
 }
@@ -232,29 +229,17 @@ void hierarchical_merge(NodeContext& ctx, Framebuffer fb) {
     const int bit = 1 << i;
     if (r & (bit - 1)) break; // already sent its buffer
     if (r & bit) {
-      Bytes out(fb.bytes());
-      const std::size_t n = fb.pixel_count();
-      std::memcpy(out.data(), fb.rgb().data(), 3 * n);
-      std::memcpy(out.data() + 3 * n, fb.depth().data(), 4 * n);
-      std::memcpy(out.data() + 7 * n, fb.ids().data(), 4 * n);
-      Counters k;
-      k.bytes_packed = out.size();
-      ctx.charge(k);
+      Bytes out = fb.pack_locations(0, fb.pixel_count());
+      ctx.charge_packing(out.size());
       c.send(r ^ bit, kTagMerge, std::move(out));
       return;
     }
     if ((r ^ bit) >= c.size()) continue; // no partner when P is not a power of two (a ring of 3)
     Bytes in = c.recv(r ^ bit, kTagMerge);
     ctx.alloc(double(in.size()), "merge receive buffer");
-    Framebuffer other(fb.width(), fb.rows(), glm::vec3(0));
-    const std::size_t n = other.pixel_count();
-    std::memcpy(other.rgb().data(), in.data(), 3 * n);
-    std::memcpy(other.depth().data(), in.data() + 3 * n, 4 * n);
-    std::memcpy(other.ids().data(), in.data() + 7 * n, 4 * n);
     Counters k;
     k.bytes_packed = in.size();
-    k.merge_ops = n; // every location is compared (Algorithm 4)
-    fb.merge(other);
+    k.merge_ops = fb.merge_locations(in, 0); // every location is compared (Algorithm 4)
     ctx.charge(k);
     ctx.release(double(in.size()));
   }
@@ -263,9 +248,7 @@ void hierarchical_merge(NodeContext& ctx, Framebuffer fb) {
 
 void paste_at_node0(NodeContext& ctx, const NodeRenderer& nr, const Framebuffer& part) {
   auto ph = ctx.phase("paste");
-  Counters k;
-  k.bytes_packed = part.rgb().size();
-  ctx.charge(k);
+  ctx.charge_packing(part.rgb().size());
   auto parts = coll::gatherv(ctx.comm(), 0, part.rgb());
   auto rows =
       coll::gatherv(ctx.comm(), 0,

@@ -6,20 +6,17 @@
 #include <vector>
 
 #include "algo/algorithm.hpp"
+#include "algo/world_polygon.hpp"
 #include "raster/framebuffer.hpp"
 #include "raster/renderer.hpp"
 #include "scene/scene.hpp"
 
 namespace zc::blazek {
 
-// A polygon as it travels (host initiated packets, forwarded polygons): its global scene id (the
-// depth tie-break), material and three WORLD-space vertices with normals, 80 bytes; the receiving
-// node projects and shades them. (The thesis's packets were smaller: "packets containing 100
-// polygons each ... three kilobytes", about 30 bytes a polygon, ch. V.)
-struct Poly {
-  std::uint32_t id, material;
-  Vertex v[3];
-};
+// A polygon as it travels (host initiated packets, forwarded polygons): the world polygon record,
+// 80 bytes. (The thesis's packets were smaller: "packets containing 100 polygons each ... three
+// kilobytes", about 30 bytes a polygon, ch. V.)
+using Poly = WorldPolygon;
 
 constexpr int kTagHost = 1, kTagForward = 2, kTagMerge = 3, kTagAck = 4;
 

@@ -26,9 +26,7 @@ void host_broadcast_host(NodeContext& ctx) {
     append(all, &sz, 1);
     append(all, b.data(), b.size());
   }
-  Counters k;
-  k.bytes_packed = all.size();
-  ctx.charge(k);
+  ctx.charge_packing(all.size());
   ctx.comm().send(0, kTagHost, std::move(all));
 }
 

@@ -36,9 +36,7 @@ void host_initiated_host(NodeContext& ctx) {
     if (packet.empty()) return;
     // Flow control: wait until the node has rendered packet i - kHostWindow.
     if (sent[std::size_t(next)]++ >= kHostWindow) c.recv(next, kTagAck);
-    Counters k;
-    k.bytes_packed = packet.size() * sizeof(Poly);
-    ctx.charge(k);
+    ctx.charge_packing(packet.size() * sizeof(Poly));
     // Blocking: the host waits for each packet to reach its node (the SRM has one link, to node
     // 0); a node buffers up to kHostWindow packets it has not rendered yet.
     c.send(next, kTagHost, pack(packet));

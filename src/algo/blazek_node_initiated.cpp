@@ -14,9 +14,7 @@ void describe_round_robin(NodeContext& ctx) {
   auto ph = ctx.phase("distribute");
   for (std::size_t o = 0; o < s.objects.size(); ++o) {
     Bytes b = encode_object(s, o);
-    Counters k;
-    k.bytes_packed = b.size();
-    ctx.charge(k);
+    ctx.charge_packing(b.size());
     c.send(int(o % std::size_t(c.size())), kTagHost, std::move(b));
   }
   for (int n = 0; n < c.size(); ++n)

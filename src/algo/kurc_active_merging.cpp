@@ -35,7 +35,8 @@ MergeMeasures ActivePixelMerging::merge(NodeContext& ctx, Counters& w) {
   std::uint64_t owned_rows = 0;
   for (int node : owner)
     owned_rows += node == r;
-  ctx.alloc(double(owned_rows) * width_ * 11.0, "z-buffer of the owned scanlines");
+  ctx.alloc(double(owned_rows) * width_ * double(Framebuffer::kLocationBytes),
+            "z-buffer of the owned scanlines");
   return m;
 }
 

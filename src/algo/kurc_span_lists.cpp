@@ -20,11 +20,7 @@ NodeTriangles distribute_triangles(NodeContext& ctx) {
     std::vector<std::vector<TriUV>> per_uv(P);
     for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
       const Triangle& t = scene.triangles[i];
-      per[i % P].push_back(
-          {std::uint32_t(i),
-           t.material,
-           {t.v[0], t.v[1], t.v[2]},
-           {scene.vertices[t.v[0]], scene.vertices[t.v[1]], scene.vertices[t.v[2]]}});
+      per[i % P].push_back({world_polygon(scene, std::uint32_t(i)), {t.v[0], t.v[1], t.v[2]}});
       if (textured)
         per_uv[i % P].push_back({{scene.uvs[t.v[0]], scene.uvs[t.v[1]], scene.uvs[t.v[2]]}});
     }
@@ -49,7 +45,7 @@ NodeSpans create_span_lists(NodeContext& ctx, const NodeRenderer& nr, const Node
   std::unordered_map<std::uint32_t, ProjectedVertex> pv;
   for (const auto& t : mine.tris)
     for (int k = 0; k < 3; ++k)
-      if (!pv.count(t.vid[k])) pv.emplace(t.vid[k], nr.project(t.v[k], w));
+      if (!pv.count(t.vid[k])) pv.emplace(t.vid[k], nr.project(t.poly.v[k], w));
   NodeSpans s;
   for (std::size_t i = 0; i < mine.tris.size(); ++i) {
     const TriWorld& t = mine.tris[i];
@@ -58,8 +54,8 @@ NodeSpans create_span_lists(NodeContext& ctx, const NodeRenderer& nr, const Node
     if (textured)
       for (int k = 0; k < 3; ++k)
         uv[k] = &mine.uvs[i].uv[k];
-    nr.setup(t.id, Triangle{{t.vid[0], t.vid[1], t.vid[2]}, t.material}, p, textured ? uv : nullptr,
-             s.batch, w);
+    nr.setup(t.poly.id, Triangle{{t.vid[0], t.vid[1], t.vid[2]}, t.poly.material}, p,
+             textured ? uv : nullptr, s.batch, w);
   }
   s.lists = build_span_lists(s.batch, nr.width(), nr.height(), w);
   ctx.charge(w);

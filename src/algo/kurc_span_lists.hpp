@@ -9,17 +9,17 @@
 #include <glm/vec2.hpp>
 
 #include "algo/algorithm.hpp"
+#include "algo/world_polygon.hpp"
 #include "raster/active_pixels.hpp"
 #include "raster/renderer.hpp"
 
 namespace zc::kurc {
 
-// A triangle dealt to a node: its global id, material and world-space vertices (with their ids,
-// so shared vertices are transformed once per node).
+// A triangle dealt to a node: the world polygon record and its vertex ids, so that shared
+// vertices are transformed once per node.
 struct TriWorld {
-  std::uint32_t id, material;
+  WorldPolygon poly;
   std::uint32_t vid[3];
-  Vertex v[3];
 };
 struct TriUV {
   glm::vec2 uv[3];

@@ -11,36 +11,6 @@ namespace zc::kurc {
 
 namespace {
 
-// Full-z-buffer message: every location of rows [y0, y1): rgb, depth, id (11 bytes each).
-Bytes pack_locations(const Framebuffer& fb, int y0, int y1) {
-  const std::size_t w = std::size_t(fb.width()), a = std::size_t(y0) * w;
-  const std::size_t n = y1 > y0 ? std::size_t(y1 - y0) * w : 0;
-  Bytes out(11 * n);
-  if (n == 0) return out;
-  std::memcpy(out.data(), fb.rgb().data() + 3 * a, 3 * n);
-  std::memcpy(out.data() + 3 * n, fb.depth().data() + a, 4 * n);
-  std::memcpy(out.data() + 7 * n, fb.ids().data() + a, 4 * n);
-  return out;
-}
-
-// Z-buffers a received message of rows [y0, y1) into fb; returns the locations compared.
-std::size_t merge_locations(Framebuffer& full, const Bytes& in, int y0, int y1) {
-  const std::size_t W = std::size_t(full.width());
-  const std::size_t n = std::size_t(y1 - y0) * W, base = std::size_t(y0) * W;
-  const std::uint8_t* rgb = in.data();
-  const float* z = reinterpret_cast<const float*>(in.data() + 3 * n);
-  std::vector<float> zs(z, z + n);
-  std::vector<std::uint32_t> ids(n);
-  std::memcpy(ids.data(), in.data() + 7 * n, 4 * n);
-  for (std::size_t k = 0; k < n; ++k)
-    if (in_front(zs[k], ids[k], full.depth()[base + k], full.ids()[base + k])) {
-      full.depth()[base + k] = zs[k];
-      full.ids()[base + k] = ids[k];
-      std::memcpy(&full.rgb()[3 * (base + k)], rgb + 3 * k, 3);
-    }
-  return n;
-}
-
 class ZbufExc : public MergeScheme {
 public:
   const char* name() const override { return "zbuf-exc"; }
@@ -65,13 +35,14 @@ public:
       const int partner = r ^ (1 << i), mid = y0_ + (y1_ - y0_) / 2;
       const bool top = !(r & (1 << i));                       // keeps the upper half
       const int sy0 = top ? mid : y0_, sy1 = top ? y1_ : mid; // the half that leaves
-      Bytes out = pack_locations(full_, sy0, sy1);
+      const std::size_t W = std::size_t(full_.width());
+      Bytes out = full_.pack_locations(sy0 * W, (sy1 - sy0) * W);
       m.step_bytes.push_back(double(out.size()));
       auto h = c.isend(partner, kTagZbuf + i, std::move(out));
       Bytes in = c.recv(partner, kTagZbuf + i);
       h->wait();
       const int ky0 = top ? y0_ : mid, ky1 = top ? mid : y1_;
-      const std::size_t n = merge_locations(full_, in, ky0, ky1);
+      const std::size_t n = full_.merge_locations(in, ky0 * W);
       w.merge_ops += n;
       m.merge_load += n;
       y0_ = ky0;

@@ -133,20 +133,10 @@ SimResult run_mpi(const SimConfig& cfg) {
   nlohmann::json& j = res.report;
   j["backend"] = "mpi";
   j["measured"] = true;
-  j["machine"] = "mpi";
-  j["platform"] = "MPI_COMM_WORLD";
+  add_run_header(
+      j, {"mpi", "MPI_COMM_WORLD", topology_name(cfg.topology), "measured", cfg.scene_path, P}, cfg,
+      algo.name, scene);
   j["processors"] = processors;
-  j["nodes"] = P;
-  j["topology"] = topology_name(cfg.topology);
-  j["fidelity"] = "measured";
-  j["algorithm"] = algo.name;
-  j["options"] = cfg.options.values;
-  j["frames"] = cfg.options.frames;
-  j["scene"] = {{"path", cfg.scene_path},
-                {"triangles", scene.triangles.size()},
-                {"vertices", scene.vertices.size()},
-                {"width", scene.width},
-                {"height", scene.height}};
   j["status"] = "ok";
   j["virtual_time_s"] = total; // measured: the slowest rank's wall-clock time
   add_node_sections(j, nodes, P, total);

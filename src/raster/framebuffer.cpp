@@ -58,14 +58,31 @@ std::uint64_t Framebuffer::merge(const Framebuffer& o) {
   for (std::size_t i = 0; i < ids_.size(); ++i) {
     if (o.ids_[i] == kNoTriangle) continue;
     ++compares;
-    if (in_front(o.depth_[i], o.ids_[i], depth_[i], ids_[i])) {
-      depth_[i] = o.depth_[i];
-      ids_[i] = o.ids_[i];
-      for (int k = 0; k < 3; ++k)
-        rgb_[3 * i + k] = o.rgb_[3 * i + k];
-    }
+    test_and_write(i, o.depth_[i], o.ids_[i], &o.rgb_[3 * i]);
   }
   return compares;
+}
+
+std::vector<std::uint8_t> Framebuffer::pack_locations(std::size_t first, std::size_t n) const {
+  std::vector<std::uint8_t> out(kLocationBytes * n);
+  if (n == 0) return out;
+  std::memcpy(out.data(), rgb_.data() + 3 * first, 3 * n);
+  std::memcpy(out.data() + 3 * n, depth_.data() + first, 4 * n);
+  std::memcpy(out.data() + 7 * n, ids_.data() + first, 4 * n);
+  return out;
+}
+
+std::size_t Framebuffer::merge_locations(const std::vector<std::uint8_t>& msg, std::size_t first) {
+  const std::size_t n = msg.size() / kLocationBytes;
+  if (msg.size() % kLocationBytes != 0 || first + n > ids_.size())
+    throw std::runtime_error("Framebuffer::merge_locations: message does not fit the buffer");
+  std::vector<float> z(n);
+  std::vector<std::uint32_t> id(n);
+  std::memcpy(z.data(), msg.data() + 3 * n, 4 * n);
+  std::memcpy(id.data(), msg.data() + 7 * n, 4 * n);
+  for (std::size_t k = 0; k < n; ++k)
+    test_and_write(first + k, z[k], id[k], msg.data() + 3 * k);
+  return n;
 }
 
 void Framebuffer::paste(const Framebuffer& part) {

@@ -61,15 +61,24 @@ public:
     return true;
   }
 
-  // Merge another buffer over the same rows, pixel by pixel (hierarchical merge, full z-buffer
-  // merging). Returns the number of comparisons made.
+  // Merge another buffer over the same rows, pixel by pixel (test_and_write, the one z-merge).
+  // Returns the number of comparisons made (the other's covered pixels).
   std::uint64_t merge(const Framebuffer& other);
+
+  // The wire format of full z-buffer locations (hierarchical merge, full z-buffer merging):
+  // `count` locations from index `first` as three planes, rgb (3 bytes each), depth (4), id (4),
+  // kLocationBytes a location.
+  static constexpr std::size_t kLocationBytes = 11;
+  std::vector<std::uint8_t> pack_locations(std::size_t first, std::size_t count) const;
+  // Z-buffers such a message into the locations from index `first` (test_and_write at each);
+  // returns the number of locations it held.
+  std::size_t merge_locations(const std::vector<std::uint8_t>& msg, std::size_t first);
   // Copy the rows of `part` (a band or interleaved set) into this buffer (strip pasting).
   void paste(const Framebuffer& part);
 
   std::uint64_t covered() const; // pixels written by some triangle (TPF)
   std::size_t pixel_count() const { return ids_.size(); }
-  std::size_t bytes() const { return rgb_.size() + depth_.size() * 4 + ids_.size() * 4; }
+  std::size_t bytes() const { return ids_.size() * kLocationBytes; }
 
   std::vector<std::uint8_t>& rgb() { return rgb_; }
   const std::vector<std::uint8_t>& rgb() const { return rgb_; }

@@ -45,6 +45,23 @@ void from_json(const nlohmann::json& j, NodeRecord& r) {
   r.metrics = j.at("metrics");
 }
 
+void add_run_header(nlohmann::json& j, const RunHeader& h, const SimConfig& cfg,
+                    const std::string& algorithm, const Scene& scene) {
+  j["machine"] = h.machine;
+  j["platform"] = h.platform;
+  j["nodes"] = h.nodes;
+  j["topology"] = h.topology;
+  j["fidelity"] = h.fidelity;
+  j["algorithm"] = algorithm;
+  j["options"] = cfg.options.values;
+  j["frames"] = cfg.options.frames;
+  j["scene"] = {{"path", h.scene_path},
+                {"triangles", scene.triangles.size()},
+                {"vertices", scene.vertices.size()},
+                {"width", scene.width},
+                {"height", scene.height}};
+}
+
 void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, int P,
                        double total_s) {
   // Phases: per node totals, then max/mean/min over the nodes that entered the phase.

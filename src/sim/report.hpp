@@ -41,6 +41,15 @@ struct NodeRecord {
 void to_json(nlohmann::json& j, const NodeRecord& r);
 void from_json(const nlohmann::json& j, NodeRecord& r);
 
+// The report's header: what ran where ("machine", "platform", "nodes", "topology", "fidelity",
+// "algorithm", "options", "frames", "scene"), whatever the backend.
+struct RunHeader {
+  std::string machine, platform, topology, fidelity, scene_path;
+  int nodes = 0;
+};
+void add_run_header(nlohmann::json& j, const RunHeader& h, const SimConfig& cfg,
+                    const std::string& algorithm, const Scene& scene);
+
 // "phases", "per_node", "communication", "counters", "load_imbalance" and the algorithm's metrics
 // (node 0's, merged at the top level). `nodes` holds the P nodes in rank order, then the host if
 // it ran; total_s is the run's time (for idle_s).

@@ -241,19 +241,10 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   res.ok = failure.empty();
   res.error = failure;
   nlohmann::json& j = res.report;
-  j["machine"] = pm.machine;
-  j["platform"] = platform_label;
-  j["nodes"] = P;
-  j["topology"] = topology_name(pm.topology);
-  j["fidelity"] = fidelity_name(cfg.fidelity);
-  j["algorithm"] = algo.name;
-  j["options"] = cfg.options.values;
-  j["frames"] = cfg.options.frames;
-  j["scene"] = {{"path", preloaded ? scene.path : cfg.scene_path},
-                {"triangles", scene.triangles.size()},
-                {"vertices", scene.vertices.size()},
-                {"width", scene.width},
-                {"height", scene.height}};
+  add_run_header(j,
+                 {pm.machine, platform_label, topology_name(pm.topology),
+                  fidelity_name(cfg.fidelity), preloaded ? scene.path : cfg.scene_path, P},
+                 cfg, algo.name, scene);
   j["status"] = res.ok ? "ok" : (oom ? "out_of_memory" : "error");
   if (!res.ok) j["error"] = failure;
   j["virtual_time_s"] = vtime;
