@@ -1,4 +1,5 @@
 // zcube calibrate: fit the CPU cost tables to the seeds' figures (repro/calibrate.hpp).
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -8,6 +9,7 @@
 #include "cli/paths.hpp"
 #include "repro/calibrate.hpp"
 #include "sim/batch.hpp"
+#include "util/error.hpp"
 
 namespace zc::cli {
 
@@ -19,8 +21,10 @@ static int cmd_calibrate(std::vector<std::string> args) {
   o.root = source_root();
   o.jobs = default_jobs();
   std::string out = o.root + "/results/calibration";
-  bool write = false, no_crossval = false;
-  app.add_option("--jobs", o.jobs, "simulations at once")->capture_default_str();
+  bool write = false, no_crossval = false, overwrite = false;
+  app.add_option("--jobs", o.jobs, "simulations at once")
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
   app.add_option("--out", out, "directory for fit.json, the CSV tables and README.md")
       ->capture_default_str();
   app.add_option("--max-iterations", o.max_iterations, "fixed-point steps of the iPSC/2 fit")
@@ -29,8 +33,17 @@ static int cmd_calibrate(std::vector<std::string> args) {
                  "cost groups kept at their physical estimate (default: packing)");
   app.add_flag("--no-crossval", no_crossval, "skip the leave-one-scene-out folds");
   app.add_flag("--write", write, "also rewrite src/machine/calibrated_costs.hpp (then rebuild)");
+  app.add_flag("--overwrite", overwrite,
+               "replace the fit.json already in --out (the committed results/calibration/)");
   if (int rc = parse(app, args); rc >= 0) return rc;
   o.cross_validate = !no_crossval;
+  // Checked before the fit (minutes): a calibration is never replaced without being told.
+  if (std::filesystem::exists(out + "/fit.json") && !overwrite)
+    throw UsageError("--out " + out +
+                     ": holds a calibration (fit.json); give another --out or "
+                     "--overwrite to replace it");
+  if (std::filesystem::exists(out) && !std::filesystem::is_directory(out))
+    throw UsageError("--out " + out + ": exists and is not a directory");
   const nlohmann::json fit = calibrate(o);
   write_calibration_results(fit, out);
   std::cout << std::setprecision(4) << "multipliers of the physical estimates:";

@@ -19,6 +19,7 @@ static int cmd_regress(std::vector<std::string> args) {
   std::string against, with, write, runs_file = root + "/tests/golden/runs.json";
   std::vector<std::string> sets;
   int jobs = default_jobs();
+  double rtol = 1e-9;
   app.add_option("--against", against, "directory of reduced reports to compare with");
   app.add_option("--with", with,
                  "compare --against with this directory instead of running (two versions or two "
@@ -26,7 +27,11 @@ static int cmd_regress(std::vector<std::string> args) {
   app.add_option("--write", write, "write the reduced reports of this run to a directory");
   app.add_option("--runs", runs_file, "runs file")->capture_default_str();
   app.add_option("--set", sets, "override a flag in every run: flag=value (e.g. latency=10us)");
-  app.add_option("--jobs", jobs, "runs at once")->check(CLI::PositiveNumber)->capture_default_str();
+  app.add_option("--jobs", jobs, "runs at once")->check(CLI::Range(1, 4096))->capture_default_str();
+  app.add_option("--rtol", rtol,
+                 "numbers within this relative difference are equal (0: bit for bit)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   if (int rc = parse(app, args); rc >= 0) return rc;
   if (against.empty() && write.empty())
     throw UsageError("regress: give --against DIR (compare) and/or --write DIR (record)");
@@ -45,20 +50,28 @@ static int cmd_regress(std::vector<std::string> args) {
     }
     now = run_regress(read_regress_runs(runs_file), root, jobs, set);
   }
+  const auto before = against.empty() ? decltype(now){} : read_report_dir(against);
   if (!write.empty()) {
     write_report_dir(now, write);
     std::cout << "regress: wrote " << now.size() << " reports to " << write << "/\n";
   }
-  if (against.empty()) return 0;
-  const auto diffs = compare_reduced(read_report_dir(against), now);
+  // A run that failed is never a success, even when the golden report failed the same way.
+  const auto failed = failed_runs(now);
+  for (const auto& f : failed)
+    std::cerr << "regress: run " << f << "\n";
+  if (against.empty()) return failed.empty() ? 0 : 1;
+  const auto diffs = compare_reduced(before, now, rtol);
   if (diffs.empty()) {
-    std::cout << "regress: " << now.size() << " runs, identical to " << against << "\n";
-    return 0;
+    std::cout << "regress: " << now.size() << " runs, identical to " << against
+              << (rtol > 0 ? " (relative tolerance " + num(rtol) + ")" : " (bit for bit)") << "\n";
+    return failed.empty() ? 0 : 1;
   }
   Table t{{"run", "quantity", against, with.empty() ? "now" : with, "relative change"}, {}};
   for (const auto& d : diffs)
     t.add({d.run, d.quantity, d.before, d.after, d.rel != 0 ? num(d.rel, 3) : ""});
-  std::cout << t.markdown() << "regress: " << diffs.size() << " differences\n";
+  std::cout << t.markdown() << "regress: " << diffs.size() << " differences"
+            << (failed.empty() ? "" : ", " + std::to_string(failed.size()) + " runs failed")
+            << "\n";
   return 1;
 }
 

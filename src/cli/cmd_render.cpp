@@ -7,6 +7,7 @@
 
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
+#include "cli/paths.hpp"
 #include "raster/image_io.hpp"
 #include "raster/renderer.hpp"
 #include "scene/load.hpp"
@@ -14,11 +15,12 @@
 
 namespace zc::cli {
 
-// The default scene ships with the sources; found from the working directory or the source tree.
+// The default scene ships with the sources and the installed data; found from the working
+// directory, else where the data is (cli/paths.hpp).
 std::string default_scene_path() {
   const std::string rel = "scenes/teapot.json";
   if (std::filesystem::exists(rel)) return rel;
-  return std::string(ZCUBE_SOURCE_DIR) + "/" + rel;
+  return source_root() + "/" + rel;
 }
 
 static int cmd_render(std::vector<std::string> args) {

@@ -29,10 +29,17 @@ static int cmd_reproduce(std::vector<std::string> args) {
   [[maybe_unused]] auto* jobs_opt =
       app.add_option("--jobs", o.jobs,
                      "simulations at once, each its own process (per rank under mpirun: 1)")
-          ->check(CLI::PositiveNumber)
+          ->check(CLI::Range(1, 4096))
           ->capture_default_str();
-  app.add_flag("--full", o.full, "Blazek's whole grid: 1..2048 spheres (about an hour)");
-  app.add_flag("--no-plots", no_plots, "skip the PNG plots");
+  app.add_flag("--full", o.full,
+               "Blazek's whole grid: 1..2048 spheres (about 12 minutes on two cores)");
+  app.add_flag("--overwrite", o.overwrite,
+               "replace a paper's tables even when they hold more than this run writes (without "
+               "it, such tables stay and this run's go beside them, e.g. results/blazek-quick/)");
+  app.add_flag("--no-plots", no_plots, "skip the plots");
+  app.add_option("--plot-format", o.plot_format, "png, svg or pdf")
+      ->check(CLI::IsMember({"png", "svg", "pdf"}))
+      ->capture_default_str();
   app.add_flag("--no-calibration", no_calibration,
                "skip the calibration's fit and validation (results/calibration/)");
   if (int rc = parse(app, args); rc >= 0) return rc;

@@ -11,6 +11,7 @@
 #include "repro/paper_figures.hpp"
 #include "scene/load.hpp"
 #include "sim/run_flags.hpp"
+#include "sim/simgrid_args.hpp"
 #include "util/error.hpp"
 #ifdef ZCUBE_HAVE_MPI
 #include "mpi/mpi_run.hpp"
@@ -117,7 +118,10 @@ static int cmd_run(std::vector<std::string> args) {
       {"packet", &packet}, {"lines", &lines},       {"forward", &forward}};
   for (const auto& [k, v] : text)
     if (!v->empty()) flags[k] = *v;
-  const SimConfig cfg = config_from_flags(flags, scene);
+  SimConfig cfg = config_from_flags(flags, scene);
+  cfg.simgrid_args = sf.simgrid_args();
+  check_simgrid_args(cfg.simgrid_args);
+  std::cout << describe_overrides(cfg);
   // A speed-up figure of a paper needs the sequential time on the same machine: one more
   // simulation, in its own process and before this one (a forked child must not inherit a
   // SimGrid engine).

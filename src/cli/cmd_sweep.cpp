@@ -1,10 +1,12 @@
 // zcube sweep: the Cartesian product of list-valued run flags, each point its own simulation
 // process (repro/sweep.hpp), with a CSV, a JSON and a plot of the swept quantity.
+#include <algorithm>
 #include <iostream>
 
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
 #include "cli/paths.hpp"
+#include "machine/units.hpp"
 #include "repro/plot_script.hpp"
 #include "repro/progress.hpp"
 #include "repro/reproduce.hpp"
@@ -22,6 +24,18 @@ namespace zc::cli {
 
 std::string default_scene_path(); // cmd_render.cpp
 
+// Quantities are checked alone, before anything runs: `--latency 275,27` is a usage error, not
+// two failed points.
+static void check_quantities(const std::vector<SweepAxis>& axes) {
+  for (const auto& ax : axes)
+    for (const auto& v : ax.values) {
+      if (ax.flag == "latency" || ax.flag == "per-hop")
+        parse_time(v, "--" + ax.flag, Unit::Required);
+      if (ax.flag == "bandwidth") parse_bandwidth(v, "--bandwidth", Unit::Required);
+      if (ax.flag == "memory") parse_bytes(v, "--memory", Unit::Required);
+    }
+}
+
 static int cmd_sweep(std::vector<std::string> args) {
   CLI::App app{"Run the Cartesian product of comma-separated flag values, one process a point "
                "(e.g. --nodes 1,2,4,8 --latency 10us,275us --algorithm pair-rs,aapc-hbp)",
@@ -29,32 +43,56 @@ static int cmd_sweep(std::vector<std::string> args) {
   std::map<std::string, std::string> given;
   for (const auto& f : run_flag_names())
     app.add_option("--" + f, given[f], "comma-separated values of zcube run --" + f);
-  std::string out = "sweep", plot_x, plot_y = "virtual_s";
+  std::string out = "sweep", plot_x, plot_y = "virtual_s", plot_format = "png";
   int jobs = default_jobs();
-  bool no_plot = false;
+  bool no_plot = false, baseline = false;
   app.add_option("--out", out, "directory for sweep.csv, sweep.json, sweep.png")
       ->capture_default_str();
   [[maybe_unused]] auto* jobs_opt =
       app.add_option("--jobs", jobs, "points at once (per rank under mpirun: 1)")
-          ->check(CLI::PositiveNumber)
+          ->check(CLI::Range(1, 4096))
           ->capture_default_str();
   app.add_option("--plot-x", plot_x,
                  "flag on the plot's x axis (default: the first with several values)");
-  app.add_option("--plot-y", plot_y, "column on the plot's y axis")->capture_default_str();
+  app.add_option("--plot-y", plot_y,
+                 "column on the plot's y axis: virtual_s, speedup, efficiency, wall_s, messages, "
+                 "bytes, concurrent_volume_bytes, load_imbalance or phase:<name>")
+      ->capture_default_str();
+  app.add_option("--plot-format", plot_format, "png, svg or pdf")
+      ->check(CLI::IsMember({"png", "svg", "pdf"}))
+      ->capture_default_str();
   app.add_flag("--no-plot", no_plot, "skip the plot");
+  app.add_flag("--baseline", baseline,
+               "also run the sequential renderer on one node for every combination of the other "
+               "flags, so every row gets speedup and efficiency");
   if (int rc = parse(app, args); rc >= 0) return rc;
 
   std::vector<SweepAxis> axes;
   for (const auto& f : run_flag_names())
     if (!given[f].empty()) axes.push_back({f, split_list(given[f], f)});
   if (axes.empty()) throw UsageError("sweep: give at least one flag, e.g. --nodes 1,2,4,8");
+  check_quantities(axes);
   if (plot_x.empty())
     for (const auto& ax : axes)
       if (ax.values.size() > 1) {
         plot_x = ax.flag;
         break;
       }
-  const auto points = expand_sweep(axes, default_scene_path());
+  auto points = expand_sweep(axes, default_scene_path());
+  if (baseline) add_baselines(axes, points, default_scene_path());
+  const auto& known = sweep_value_columns();
+  bool has_baseline = false;
+  for (const auto& p : points)
+    has_baseline = has_baseline || is_baseline(p);
+  if (!plot_y.starts_with("phase:") && std::find(known.begin(), known.end(), plot_y) == known.end())
+    throw UsageError("--plot-y " + plot_y +
+                     ": not a sweep column (virtual_s, speedup, efficiency, wall_s, messages, "
+                     "bytes, concurrent_volume_bytes, load_imbalance or phase:<name>)");
+  if ((plot_y == "speedup" || plot_y == "efficiency") && !has_baseline)
+    throw UsageError("--plot-y " + plot_y +
+                     ": the sweep has no sequential run on one node to compare with (add "
+                     "--baseline, or sequential to --algorithm and 1 to --nodes)");
+  prepare_sweep_dir(out); // before anything runs: no stale sweep.csv survives an interruption
   std::size_t invalid = 0;
   for (const auto& p : points)
     invalid += !p.config;
@@ -85,7 +123,8 @@ static int cmd_sweep(std::vector<std::string> args) {
     return run_batch(cfgs, jobs, progress_printer("sweep"));
   });
   if (!root) return 0;
-  const nlohmann::json rows = sweep_rows(axes, points, reports);
+  nlohmann::json rows = sweep_rows(axes, points, reports);
+  add_speedups(points, reports, rows);
   write_sweep(axes, rows, reports, out);
   int failed = 0;
   for (const auto& r : rows)
@@ -94,14 +133,23 @@ static int cmd_sweep(std::vector<std::string> args) {
       std::cerr << "sweep: point " << r["index"] << " failed: " << r["error"].get<std::string>()
                 << "\n";
     }
+  const std::string plot = "sweep." + plot_format;
+  bool drawn = false;
   if (!no_plot && !plot_x.empty()) {
-    if (!run_plot_script(source_root(),
-                         {"--sweep", out + "/sweep.csv", plot_x, plot_y, out + "/sweep.png"}))
-      std::cerr << "sweep: plot not drawn\n";
+    bool column = false;
+    for (const auto& r : rows)
+      column = column || r.contains(plot_y);
+    if (!column) {
+      std::cerr << "zcube: error: --plot-y " << plot_y << ": no point has that column\n";
+      return 2;
+    }
+    drawn = run_plot_script(source_root(), {"--format", plot_format, "--sweep", out + "/sweep.csv",
+                                            plot_x, plot_y, out + "/" + plot});
+    if (!drawn) std::cerr << "sweep: plot not drawn\n";
   }
   std::cout << "sweep: " << rows.size() << " points, " << failed << " failed; wrote " << out
-            << "/sweep.csv, sweep.json" << (no_plot || plot_x.empty() ? "" : ", sweep.png") << "\n";
-  return failed ? 1 : 0;
+            << "/sweep.csv, sweep.json" << (drawn ? ", " + plot : "") << "\n";
+  return failed || (!no_plot && !plot_x.empty() && !drawn) ? 1 : 0;
 }
 
 ZC_COMMAND("sweep", "run the Cartesian product of flag values (what-if studies)", cmd_sweep);

@@ -7,6 +7,10 @@
 #include <iostream>
 #include <sstream>
 
+#include <xbt/base.h> // before simgrid/version.h, which uses its macros
+
+#include <simgrid/version.h>
+
 #include "cli/command.hpp"
 #include "util/error.hpp"
 
@@ -19,7 +23,7 @@ std::map<std::string, CommandInfo>& registry() {
 
 static void usage(std::ostream& os) {
   os << "usage: zcube <command> [options]   (zcube <command> --help for its "
-        "options)\n\ncommands:\n";
+        "options; zcube --version)\n\ncommands:\n";
   for (const auto& [name, info] : zc::cli::registry())
     os << "  " << name << std::string(name.size() < 12 ? 12 - name.size() : 1, ' ') << info.summary
        << "\n";
@@ -39,6 +43,13 @@ int main(int argc, char** argv) {
     return 2;
   }
   const std::string cmd = argv[1];
+  if (cmd == "--version" || cmd == "version") {
+    int major = 0, minor = 0, patch = 0;
+    sg_version_get(&major, &minor, &patch);
+    std::cout << "zcube " << ZCUBE_VERSION << " (SimGrid " << major << "." << minor << "." << patch
+              << ")\n";
+    return 0;
+  }
   if (cmd == "--help" || cmd == "-h" || cmd == "help") {
     usage(std::cout);
     return 0;

@@ -1,14 +1,23 @@
 #pragma once
-// Where the source tree's data (scenes/, platforms/, scripts/, results/) is: the current directory
-// when it is a zcube checkout, else the tree this binary was built from.
+// Where zcube's data (scenes/, platforms/, scripts/, tests/golden/) is, in this order: the current
+// directory when it is a zcube checkout; the installed tree beside the binary
+// (<prefix>/bin/zcube -> <prefix>/share/zcube, `cmake --install`); the source tree this binary was
+// built from (a build directory that was never installed).
 #include <filesystem>
 #include <string>
+#include <system_error>
 
 namespace zc::cli {
 
 inline std::string source_root() {
-  if (std::filesystem::exists("scenes/teapot.json") && std::filesystem::exists("src/cli"))
-    return ".";
+  namespace fs = std::filesystem;
+  if (fs::exists("scenes/teapot.json") && fs::exists("src/cli")) return ".";
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const fs::path installed = (exe.parent_path() / ZCUBE_DATA_FROM_BIN).lexically_normal();
+    if (fs::exists(installed / "scenes/teapot.json", ec)) return installed.string();
+  }
   return ZCUBE_SOURCE_DIR;
 }
 

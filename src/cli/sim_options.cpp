@@ -1,6 +1,11 @@
 #include "cli/sim_options.hpp"
 
+#include <iomanip>
+#include <sstream>
+
 #include "sim/run_flags.hpp"
+#include "sim/simgrid_args.hpp"
+#include "util/error.hpp"
 
 namespace zc::cli {
 
@@ -19,6 +24,28 @@ void SimFlags::add_to(CLI::App& app) {
   app.add_option("--cpu-scale", cpu_scale, "what-if: multiply every CPU cost (0.25 = 4x faster)");
   app.add_option("--memory", memory, "what-if: node memory (e.g. 16MiB)");
   app.add_option("--cost-scale", cost_scale, "multiply every cost, CPU and network");
+  app.add_option("--cfg", cfg,
+                 "a SimGrid setting name:value, passed to SimGrid after zcube's own (e.g. "
+                 "network/model:LV08); repeatable");
+  app.add_option("--log", log,
+                 "a SimGrid log setting (e.g. root.thres:info; zcube sets root.thres:critical); "
+                 "repeatable");
+}
+
+std::vector<std::string> SimFlags::simgrid_args() const {
+  std::vector<std::string> a;
+  for (const auto& c : cfg) {
+    const auto colon = c.find(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == c.size())
+      throw UsageError("--cfg '" + c + "': expected name:value (e.g. network/model:LV08)");
+    a.push_back("--cfg=" + c);
+  }
+  for (const auto& l : log) {
+    if (l.find(':') == std::string::npos && l.find('=') == std::string::npos)
+      throw UsageError("--log '" + l + "': expected category.setting:value (e.g. root.thres:info)");
+    a.push_back("--log=" + l);
+  }
+  return a;
 }
 
 std::map<std::string, std::string> SimFlags::flags() const {
@@ -42,6 +69,25 @@ void SimFlags::apply(SimConfig& cfg) const {
   cfg.topology = c.topology;
   cfg.fidelity = c.fidelity;
   cfg.overrides = c.overrides;
+  cfg.simgrid_args = simgrid_args();
+  check_simgrid_args(cfg.simgrid_args);
+}
+
+std::string describe_overrides(const SimConfig& c) {
+  const Overrides& o = c.overrides;
+  std::ostringstream s;
+  s << std::setprecision(6);
+  if (o.latency_s) s << "what-if: --latency " << *o.latency_s * 1e6 << " us (message start-up)\n";
+  if (o.bandwidth_Bps)
+    s << "what-if: --bandwidth " << *o.bandwidth_Bps / 1e6 << " MB/s (channel bandwidth)\n";
+  if (o.per_hop_s) s << "what-if: --per-hop " << *o.per_hop_s * 1e6 << " us\n";
+  if (o.cpu_scale) s << "what-if: --cpu-scale " << *o.cpu_scale << " (every CPU cost)\n";
+  if (o.memory_bytes)
+    s << "what-if: --memory " << *o.memory_bytes / 1048576 << " MiB (node memory)\n";
+  if (o.cost_scale) s << "what-if: --cost-scale " << *o.cost_scale << " (every cost)\n";
+  for (const auto& a : c.simgrid_args)
+    s << "SimGrid: " << a << "\n";
+  return s.str();
 }
 
 } // namespace zc::cli

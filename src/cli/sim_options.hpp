@@ -3,6 +3,7 @@
 // overrides (SimGrid-style units: 275us, 2.8MBps, 16MiB).
 #include <map>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -14,13 +15,22 @@ struct SimFlags {
   std::string machine = "ipsc2", topology = "cube", fidelity = "circuit";
   int nodes = 1;
   std::string latency, bandwidth, per_hop, cpu_scale, memory, cost_scale;
+  std::vector<std::string> cfg, log;   // passed to SimGrid as --cfg=... and --log=...
   CLI::Option* nodes_option = nullptr; // a platform .xml gives the node count unless --nodes does
 
   void add_to(CLI::App& app);
   // The given flags as text (sim/run_flags.hpp), for config_from_flags.
   std::map<std::string, std::string> flags() const;
+  // --cfg name:value and --log settings as SimGrid arguments (UsageError on a malformed one).
+  std::vector<std::string> simgrid_args() const;
   // Fills cfg's machine, nodes, topology, fidelity and overrides (UsageError on bad values).
   void apply(SimConfig& cfg) const;
 };
 
+} // namespace zc::cli
+
+namespace zc::cli {
+// One line per what-if override and SimGrid setting in force (empty when there is none), so a
+// run never uses a changed figure without saying so.
+std::string describe_overrides(const SimConfig& cfg);
 } // namespace zc::cli

@@ -1,5 +1,6 @@
 #include "repro/regress.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <set>
@@ -59,6 +60,11 @@ nlohmann::json reduce_report(const nlohmann::json& r) {
 std::map<std::string, nlohmann::json> run_regress(const std::vector<RegressRun>& runs,
                                                   const std::string& root, int jobs,
                                                   const std::map<std::string, std::string>& set) {
+  const auto& names = run_flag_names();
+  for (const auto& [k, v] : set)
+    if (std::find(names.begin(), names.end(), k) == names.end())
+      throw UsageError("--set " + k + "=" + v + ": '" + k +
+                       "' is not a zcube run flag (e.g. latency, bandwidth, machine, nodes)");
   std::vector<SweepPoint> points;
   for (const auto& run : runs) {
     auto flags = run.flags;
@@ -67,6 +73,14 @@ std::map<std::string, nlohmann::json> run_regress(const std::vector<RegressRun>&
     if (flags.count("scene") && !std::filesystem::path(flags["scene"]).is_absolute())
       flags["scene"] = root + "/" + flags["scene"];
     points.push_back(make_point(std::move(flags), root + "/scenes/teapot.json"));
+    if (!points.back().config) {
+      std::string msg;
+      for (const auto& [k, v] : set) {
+        msg.append("--set ").append(k).append("=").append(v).append(": ");
+      }
+      msg.append("run ").append(run.name).append(": ").append(points.back().error);
+      throw UsageError(msg);
+    }
   }
   const auto reps =
       run_points(points, [jobs](const std::vector<SimConfig>& c) { return run_batch(c, jobs); });
@@ -78,30 +92,66 @@ std::map<std::string, nlohmann::json> run_regress(const std::vector<RegressRun>&
 
 namespace {
 
+// Long values (an error message, a hash) are cut so that the table stays one line a row.
+std::string cell(const nlohmann::json& v) {
+  if (v.is_null()) return "(none)";
+  std::string s = v.is_string() ? v.get<std::string>() : v.dump();
+  if (s.size() > 72) s = s.substr(0, 69) + "...";
+  return s;
+}
+
+bool close_enough(const nlohmann::json& a, const nlohmann::json& b, double rtol) {
+  if (a == b) return true;
+  if (!a.is_number() || !b.is_number() || rtol <= 0) return false;
+  const double x = a.get<double>(), y = b.get<double>();
+  return std::fabs(x - y) <= rtol * std::max(std::fabs(x), std::fabs(y));
+}
+
+// Leaf by leaf; a side that lacks an object or an array is taken as empty, so every row is one
+// value and never a whole sub-report.
 void diff_json(const std::string& run, const std::string& path, const nlohmann::json& a,
-               const nlohmann::json& b, std::vector<RegressDiff>& out) {
-  if (a.is_object() && b.is_object()) {
+               const nlohmann::json& b, double rtol, std::vector<RegressDiff>& out) {
+  const bool recurse = (a.is_structured() || b.is_structured()) &&
+                       (a.is_null() || b.is_null() || a.type() == b.type());
+  if (recurse) {
     std::set<std::string> keys;
-    for (const auto& [k, v] : a.items())
-      keys.insert(k);
-    for (const auto& [k, v] : b.items())
-      keys.insert(k);
+    auto child = [](const nlohmann::json& j, const std::string& k) {
+      if (j.is_object()) return j.contains(k) ? j[k] : nlohmann::json();
+      if (j.is_array()) {
+        const std::size_t i = std::stoul(k);
+        return i < j.size() ? j[i] : nlohmann::json();
+      }
+      return nlohmann::json();
+    };
+    for (const auto* j : {&a, &b}) {
+      if (j->is_object())
+        for (const auto& [k, v] : j->items())
+          keys.insert(k);
+      if (j->is_array())
+        for (std::size_t i = 0; i < j->size(); ++i)
+          keys.insert(std::to_string(i));
+    }
     for (const auto& k : keys)
-      diff_json(run, path.empty() ? k : path + "." + k, a.contains(k) ? a[k] : nlohmann::json(),
-                b.contains(k) ? b[k] : nlohmann::json(), out);
+      diff_json(run, path.empty() ? k : path + "." + k, child(a, k), child(b, k), rtol, out);
     return;
   }
-  if (a == b) return;
-  RegressDiff d{run, path, a.is_null() ? "(none)" : a.dump(), b.is_null() ? "(none)" : b.dump(), 0};
+  if (close_enough(a, b, rtol)) return;
+  RegressDiff d{run, path, cell(a), cell(b), 0};
   if (a.is_number() && b.is_number() && a.get<double>() != 0)
     d.rel = (b.get<double>() - a.get<double>()) / std::fabs(a.get<double>());
   out.push_back(d);
 }
 
+std::string status_text(const nlohmann::json& r) {
+  const std::string st = r.value("status", "error");
+  return r.contains("error") ? st + " (" + r["error"].get<std::string>() + ")" : st;
+}
+
 } // namespace
 
 std::vector<RegressDiff> compare_reduced(const std::map<std::string, nlohmann::json>& before,
-                                         const std::map<std::string, nlohmann::json>& after) {
+                                         const std::map<std::string, nlohmann::json>& after,
+                                         double rtol) {
   std::vector<RegressDiff> out;
   for (const auto& [name, a] : before) {
     auto it = after.find(name);
@@ -109,11 +159,23 @@ std::vector<RegressDiff> compare_reduced(const std::map<std::string, nlohmann::j
       out.push_back({name, "(run)", "present", "missing", 0});
       continue;
     }
-    diff_json(name, "", a, it->second, out);
+    const nlohmann::json& b = it->second;
+    if (a.value("status", "error") != b.value("status", "error")) {
+      out.push_back({name, "status", cell(status_text(a)), cell(status_text(b)), 0});
+      continue;
+    }
+    diff_json(name, "", a, b, rtol, out);
   }
   for (const auto& [name, b] : after)
     if (!before.count(name)) out.push_back({name, "(run)", "missing", "present", 0});
   return out;
+}
+
+std::vector<std::string> failed_runs(const std::map<std::string, nlohmann::json>& reduced) {
+  std::vector<std::string> f;
+  for (const auto& [name, r] : reduced)
+    if (r.value("status", "error") == "error") f.push_back(name + ": " + r.value("error", "?"));
+  return f;
 }
 
 std::map<std::string, nlohmann::json> read_report_dir(const std::string& dir) {

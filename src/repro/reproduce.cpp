@@ -18,7 +18,7 @@ namespace zc {
 namespace {
 
 std::string top_readme(const ReproduceOptions& o, double wall_s, std::size_t points,
-                       const std::string& fidelity_md) {
+                       const std::string& fidelity_md, const std::string& kept) {
   std::string papers;
   for (const auto& p : o.papers)
     papers += (papers.empty() ? "" : " ") + p;
@@ -43,8 +43,8 @@ std::string top_readme(const ReproduceOptions& o, double wall_s, std::size_t poi
          "|\n\n"
          "This run: " +
          std::to_string(points) + " simulations in " + fixed(wall_s, 1) + " s of host wall time (" +
-         std::to_string(o.jobs) +
-         " at a time).\n\n"
+         std::to_string(o.jobs) + " at a time)." + (kept.empty() ? "" : " Kept: " + kept + ".") +
+         "\n\n"
          "## Error against run time (fidelity.csv, fidelity.png)\n\n"
          "The same runs under the three network models; the error is against `circuit` (the "
          "reference: each message holds its channels in dimension order, as the iPSC's "
@@ -78,10 +78,32 @@ std::string config_key(const SimConfig& c) {
   return j.dump();
 }
 
+// The output directory exists (or is made) and is a directory, before anything runs.
+void check_out_dir(const std::string& out) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(out, ec) && !fs::is_directory(out, ec))
+    throw UsageError("--out " + out + ": exists and is not a directory");
+  fs::create_directories(out, ec);
+  if (ec) throw UsageError("--out " + out + ": cannot create the directory (" + ec.message() + ")");
+}
+
 } // namespace
+
+std::string plan_directory(const ReproduceOptions& o, const PaperPlan& p, std::string* note) {
+  const std::string dir = p.name.empty() ? o.out : o.out + "/" + p.name;
+  if (o.overwrite || !p.would_degrade) return dir;
+  const std::string why = p.would_degrade(dir);
+  if (why.empty()) return dir;
+  if (note)
+    *note = dir + "/ " + why + ": kept; this run's " + p.name + " tables go to " + dir +
+            "-quick/ (--overwrite to replace them)";
+  return dir + "-quick";
+}
 
 int reproduce(const ReproduceOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
+  if (o.write) check_out_dir(o.out);
   std::vector<PaperPlan> plans;
   for (const auto& p : o.papers) {
     if (p == "kurc")
@@ -95,6 +117,15 @@ int reproduce(const ReproduceOptions& o) {
   }
   const bool all = o.papers.size() == 3;
   if (all) plans.push_back(fidelity_plan(o));
+  std::vector<std::string> dirs;
+  std::string kept;
+  for (const auto& p : plans) {
+    std::string note;
+    dirs.push_back(plan_directory(o, p, &note));
+    if (note.empty()) continue;
+    kept += (kept.empty() ? "" : "; ") + note;
+    if (o.write && o.verbose) std::cerr << "reproduce: " << note << "\n";
+  }
 
   // Plans share some points (Table 2's 16-node runs are also speed-up and fidelity points): each
   // distinct configuration is simulated once.
@@ -132,7 +163,7 @@ int reproduce(const ReproduceOptions& o) {
       }
       r[pt.key] = rep;
     }
-    const std::string dir = p.name.empty() ? o.out : o.out + "/" + p.name;
+    const std::string& dir = dirs[std::size_t(&p - plans.data())];
     std::filesystem::create_directories(dir);
     summaries += p.write(r, dir);
   }
@@ -144,10 +175,10 @@ int reproduce(const ReproduceOptions& o) {
     write_calibration_results(calibrate(c), o.out + "/calibration");
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (all) write_text(o.out + "/README.md", top_readme(o, wall, cfgs.size(), summaries));
+  if (all) write_text(o.out + "/README.md", top_readme(o, wall, cfgs.size(), summaries, kept));
 
   if (o.plots) {
-    if (!run_plot_script(o.root, {o.out}))
+    if (!run_plot_script(o.root, {"--format", o.plot_format, o.out}))
       std::cerr << "reproduce: plots not drawn (needs python3-matplotlib: scripts/setup.sh "
                    "installs it)\n";
   }

@@ -22,6 +22,7 @@ struct ReproduceOptions {
   bool full = false; // Blazek's whole grid (1..2048 spheres); slow
   int jobs = 2;
   bool plots = true;
+  std::string plot_format = "png"; // png, svg or pdf
   bool verbose = true;
   // How the points run: a local batch by default; `mpirun zcube reproduce` passes a batch sharded
   // over the ranks, and only the rank that gets the reports (write = true) writes files.
@@ -32,6 +33,8 @@ struct ReproduceOptions {
   // With every paper: also the calibration's fit and its validation (results/calibration/:
   // leave-one-scene-out folds, Charles et al.'s speed-ups predicted, plausibility of every cost).
   bool calibration = true;
+  // Write into a paper's directory even when that loses rows it holds (the --full tables).
+  bool overwrite = false;
 };
 
 struct ReproPoint {
@@ -46,6 +49,9 @@ struct PaperPlan {
   // Writes the plan's files under dir from the reports of its points; returns what it has to say
   // in results/README.md (Markdown; empty for nothing).
   std::function<std::string(const Reports&, const std::string& dir)> write;
+  // Why writing into dir would lose results it holds (e.g. the --full tables), or empty. Such a
+  // plan writes beside it, into dir + "-quick", unless overwrite is set.
+  std::function<std::string(const std::string& dir)> would_degrade;
 };
 
 PaperPlan kurc_plan(const ReproduceOptions& o);
@@ -53,9 +59,15 @@ PaperPlan charles_plan(const ReproduceOptions& o);
 PaperPlan blazek_plan(const ReproduceOptions& o);
 PaperPlan fidelity_plan(const ReproduceOptions& o); // fidelity.csv: error against run time
 
+// Where a plan's files go: out/name, or out/name-quick when that would lose rows out/name holds
+// (and overwrite is not set); the note says why (empty when nothing moved).
+std::string plan_directory(const ReproduceOptions& o, const PaperPlan& p, std::string* note);
+
 // Runs the selected plans (and the fidelity table when all papers are selected), writes
 // everything, draws the plots; returns the process exit status (non-zero when a point failed in a
-// way that is not a modelled out-of-memory).
+// way that is not a modelled out-of-memory). Never degrades what `out` holds: a plan whose
+// directory has more than this run would write goes beside it (see PaperPlan::would_degrade).
+// UsageError before any simulation when `out` cannot be a directory.
 int reproduce(const ReproduceOptions& o);
 
 // Helpers shared by the plans.

@@ -1,6 +1,8 @@
 // Blazek 1991 on the simulated iPSC/2: speed-up and efficiency of the four decompositions
 // (thesis ch. VI, Figures 12-19) on random spheres, 1..32 nodes.
 #include <algorithm>
+#include <fstream>
+#include <set>
 
 #include "machine/units.hpp"
 #include "repro/reproduce.hpp"
@@ -39,6 +41,7 @@ std::string key(const std::string& m, int s, int n) {
 
 std::string write_blazek(const std::vector<int>& spheres, const Reports& reps,
                          const std::string& dir) {
+  const bool full = spheres.size() > sphere_counts(false).size();
   Table su{{"method", "spheres", "nodes", "virtual_s", "speedup", "efficiency"}, {}};
   Table host{{"method", "spheres", "nodes", "triangles", "wall_s", "peak_rss_bytes"}, {}};
   std::string tables;
@@ -92,12 +95,15 @@ std::string write_blazek(const std::vector<int>& spheres, const Reports& reps,
   write_text(
       dir + "/README.md",
       "# Blazek 1991: four decompositions on the simulated iPSC/2\n\n"
-      "Written by `zcube reproduce blazek` (src/repro/reproduce_blazek.cpp; `--full` for 1..2048 "
-      "spheres). Thesis: ../shared/seeds/blazek-1991_parallel-zbuffer-ipsc2-thesis.txt, ch. V "
-      "(methods), ch. VI (results: curves only, no printed figures, so nothing here is fitted to "
-      "it). Machine: the iPSC/2 model calibrated on Kurc et al. (results/calibration/), circuit "
-      "fidelity, 512x512.\n\n"
-      "- Workload (ch. V): 1.." +
+      "Written by `zcube reproduce blazek" +
+          std::string(full ? " --full" : "") +
+          "` (src/repro/reproduce_blazek.cpp; `--full` for 1..2048 spheres, about 12 minutes on "
+          "two cores). Thesis: Blazek, *Parallel z-buffer rendering on the iPSC/2* (1991), ch. V "
+          "(methods), ch. VI (results: curves only, no printed figures, so nothing here is fitted "
+          "to it). Machine: the iPSC/2 model calibrated on Kurc et al. (results/calibration/), "
+          "circuit "
+          "fidelity, 512x512.\n\n"
+          "- Workload (ch. V): 1.." +
           std::to_string(big) +
           " uniformly random spheres of identical size (`scenes/blazek/thesis_spheres_N.json`), "
           "octahedra subdivided 5 times (8192 triangles each; the thesis's 5102 fits no "
@@ -114,6 +120,28 @@ std::string write_blazek(const std::vector<int>& spheres, const Reports& reps,
           ".\n\n## Speed-up and efficiency (speedup.csv)\n\n" + tables +
           "`host_cost.csv`: the simulator's wall time and peak RSS per point (points ran in "
           "parallel, so wall times are pessimistic).\n\nPlots: `speedup.png`, `efficiency.png`.\n");
+  return "";
+}
+
+// Why writing this run's tables into dir would lose rows: its speedup.csv has sphere counts
+// this run does not simulate (the committed copy is --full).
+std::string would_degrade(const std::vector<int>& spheres, const std::string& dir) {
+  std::ifstream in(dir + "/speedup.csv");
+  std::string line;
+  if (!std::getline(in, line) || !line.starts_with("method,spheres,")) return "";
+  std::set<int> have;
+  while (std::getline(in, line)) {
+    const auto a = line.find(','), b = line.find(',', a + 1);
+    if (a == std::string::npos || b == std::string::npos) continue;
+    try {
+      have.insert(std::stoi(line.substr(a + 1, b - a - 1)));
+    } catch (const std::exception&) {
+    }
+  }
+  for (int s : have)
+    if (std::find(spheres.begin(), spheres.end(), s) == spheres.end())
+      return "holds tables up to " + std::to_string(*have.rbegin()) +
+             " spheres (zcube reproduce blazek --full) that this run would drop";
   return "";
 }
 
@@ -140,6 +168,7 @@ PaperPlan blazek_plan(const ReproduceOptions& o) {
   p.write = [spheres](const Reports& r, const std::string& dir) {
     return write_blazek(spheres, r, dir);
   };
+  p.would_degrade = [spheres](const std::string& dir) { return would_degrade(spheres, dir); };
   return p;
 }
 

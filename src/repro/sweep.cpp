@@ -107,6 +107,106 @@ nlohmann::json sweep_rows(const std::vector<SweepAxis>& axes, const std::vector<
   return rows;
 }
 
+namespace {
+
+const char* const kAlgorithmAxes[] = {"algorithm", "nodes", "vertices", "output",
+                                      "packet",    "lines", "forward"};
+
+bool algorithm_axis(const std::string& flag) {
+  return std::find(std::begin(kAlgorithmAxes), std::end(kAlgorithmAxes), flag) !=
+         std::end(kAlgorithmAxes);
+}
+
+std::string value_of(const SweepPoint& p, const char* flag, const char* def) {
+  auto it = p.values.find(flag);
+  return it == p.values.end() || it->second.empty() ? def : it->second;
+}
+
+// The values of the axes that must match between a point and its baseline.
+std::map<std::string, std::string> baseline_key(const SweepPoint& p) {
+  std::map<std::string, std::string> k;
+  for (const auto& [f, v] : p.values)
+    if (!algorithm_axis(f)) k[f] = v;
+  return k;
+}
+
+} // namespace
+
+bool is_baseline(const SweepPoint& p) {
+  bool options = false;
+  for (const char* f : {"vertices", "output", "packet", "lines", "forward"})
+    options = options || !value_of(p, f, "").empty();
+  return value_of(p, "algorithm", "sequential") == "sequential" &&
+         value_of(p, "nodes", "1") == "1" && !options;
+}
+
+void add_baselines(const std::vector<SweepAxis>& axes, std::vector<SweepPoint>& points,
+                   const std::string& scene) {
+  std::vector<std::map<std::string, std::string>> have, want;
+  for (const auto& p : points) {
+    auto& list = is_baseline(p) ? have : want;
+    if (std::find(list.begin(), list.end(), baseline_key(p)) == list.end())
+      list.push_back(baseline_key(p));
+  }
+  for (const auto& k : want) {
+    if (std::find(have.begin(), have.end(), k) != have.end()) continue;
+    auto flags = k;
+    flags["algorithm"] = "sequential";
+    flags["nodes"] = "1";
+    SweepPoint p = make_point(flags, scene);
+    for (const auto& ax : axes)
+      if (!p.values.count(ax.flag)) p.values[ax.flag] = "";
+    points.push_back(std::move(p));
+  }
+}
+
+bool add_speedups(const std::vector<SweepPoint>& points, const std::vector<nlohmann::json>& reports,
+                  nlohmann::json& rows) {
+  bool any = false;
+  for (const auto& p : points)
+    any = any || is_baseline(p);
+  if (!any) return false;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    nlohmann::json& row = rows[i];
+    row["speedup"] = nullptr;
+    row["efficiency"] = nullptr;
+    if (!row["virtual_s"].is_number()) continue;
+    for (std::size_t b = 0; b < points.size(); ++b)
+      if (is_baseline(points[b]) && baseline_key(points[b]) == baseline_key(points[i]) &&
+          rows[b]["virtual_s"].is_number()) {
+        const double sp = rows[b]["virtual_s"].get<double>() / row["virtual_s"].get<double>();
+        const int nodes = reports[i].value("nodes", 1);
+        row["speedup"] = sp;
+        row["efficiency"] = sp / std::max(1, nodes);
+        break;
+      }
+  }
+  return true;
+}
+
+const std::vector<std::string>& sweep_value_columns() {
+  static const std::vector<std::string> c = {"virtual_s",
+                                             "speedup",
+                                             "efficiency",
+                                             "wall_s",
+                                             "messages",
+                                             "bytes",
+                                             "concurrent_volume_bytes",
+                                             "load_imbalance"};
+  return c;
+}
+
+void prepare_sweep_dir(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw UsageError("--out " + dir + ": exists and is not a directory");
+  fs::create_directories(dir, ec);
+  if (ec) throw UsageError("--out " + dir + ": cannot create the directory (" + ec.message() + ")");
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().stem() == "sweep") fs::remove(e.path(), ec);
+}
+
 void write_sweep(const std::vector<SweepAxis>& axes, const nlohmann::json& rows,
                  const std::vector<nlohmann::json>& reps, const std::string& dir) {
   std::filesystem::create_directories(dir);
@@ -118,9 +218,10 @@ void write_sweep(const std::vector<SweepAxis>& axes, const nlohmann::json& rows,
   std::vector<std::string> order = {"index"};
   for (const auto& ax : axes)
     order.push_back(ax.flag);
-  for (const char* k : {"status", "virtual_s", "wall_s", "messages", "bytes",
-                        "concurrent_volume_bytes", "load_imbalance", "identical", "image_sha256"})
-    order.push_back(k);
+  for (const char* k :
+       {"status", "virtual_s", "speedup", "efficiency", "wall_s", "messages", "bytes",
+        "concurrent_volume_bytes", "load_imbalance", "identical", "image_sha256"})
+    if (std::find(t.header.begin(), t.header.end(), k) != t.header.end()) order.push_back(k);
   for (const auto& h : t.header)
     if (std::find(order.begin(), order.end(), h) == order.end() && h != "error") order.push_back(h);
   order.push_back("error");

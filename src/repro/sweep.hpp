@@ -48,6 +48,25 @@ std::vector<nlohmann::json> run_points(const std::vector<SweepPoint>& points,
 nlohmann::json sweep_rows(const std::vector<SweepAxis>& axes, const std::vector<SweepPoint>& points,
                           const std::vector<nlohmann::json>& reports);
 
+// The sequential run on one node with the same values as the point on every axis but the
+// algorithm, its options and the node count: the baseline of the point's speed-up.
+bool is_baseline(const SweepPoint& p);
+// Appends, for every combination of the non-algorithm axes that has none, that baseline point
+// (zcube sweep --baseline). Its values on the algorithm option axes are "".
+void add_baselines(const std::vector<SweepAxis>& axes, std::vector<SweepPoint>& points,
+                   const std::string& scene);
+// Adds speedup = T(baseline) / T(point) and efficiency = speedup / nodes to every row (null where
+// there is no baseline or a run failed), when any point is a baseline; returns whether it did.
+bool add_speedups(const std::vector<SweepPoint>& points, const std::vector<nlohmann::json>& reports,
+                  nlohmann::json& rows);
+
+// The columns `--plot-y` may name before the sweep runs ("phase:<name>" is checked after).
+const std::vector<std::string>& sweep_value_columns();
+
+// Removes the sweep.* files an earlier sweep left in dir (so an interrupted sweep leaves none
+// that looks current); UsageError when dir cannot be a directory.
+void prepare_sweep_dir(const std::string& dir);
+
 // sweep.csv and sweep.json under dir (the JSON has the rows and the full reports).
 void write_sweep(const std::vector<SweepAxis>& axes, const nlohmann::json& rows,
                  const std::vector<nlohmann::json>& reports, const std::string& dir);

@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
@@ -58,6 +59,48 @@ nlohmann::json finish(Child& c) {
   return {{"status", "error"}, {"error", "simulation process died (" + why + ")"}};
 }
 
+// Ctrl-C (SIGINT) or SIGTERM while a batch runs: the parent kills its children (SIGKILL: a child
+// interrupted in SimGrid's or a library's exit path can hang there), reaps them, and dies of the
+// same signal, so no simulation outlives `zcube sweep` or `zcube reproduce`.
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+extern "C" void on_stop_signal(int sig) {
+  g_stop_signal = sig;
+}
+
+struct StopSignals {
+  struct sigaction old_int {
+  }, old_term{};
+  StopSignals() {
+    struct sigaction sa {};
+    sa.sa_handler = on_stop_signal;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_int);
+    sigaction(SIGTERM, &sa, &old_term);
+    // A signal the caller ignores (nohup, a background job) stays ignored.
+    if (old_int.sa_handler == SIG_IGN) sigaction(SIGINT, &old_int, nullptr);
+    if (old_term.sa_handler == SIG_IGN) sigaction(SIGTERM, &old_term, nullptr);
+  }
+  ~StopSignals() {
+    sigaction(SIGINT, &old_int, nullptr);
+    sigaction(SIGTERM, &old_term, nullptr);
+  }
+};
+
+[[noreturn]] void stop_batch(std::vector<Child>& running) {
+  for (const Child& c : running)
+    kill(c.pid, SIGKILL);
+  for (Child& c : running) {
+    close(c.fd);
+    while (waitpid(c.pid, nullptr, 0) < 0 && errno == EINTR) {
+    }
+  }
+  const int sig = g_stop_signal;
+  signal(sig, SIG_DFL);
+  raise(sig);
+  _exit(128 + sig);
+}
+
 } // namespace
 
 int default_jobs() {
@@ -72,7 +115,10 @@ std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int 
   pr.total = points.size();
   std::size_t next = 0;
   jobs = std::max(1, jobs);
+  g_stop_signal = 0;
+  const StopSignals stop_signals;
   while (next < points.size() || !running.empty()) {
+    if (g_stop_signal) stop_batch(running);
     while (next < points.size() && int(running.size()) < jobs) {
       int fds[2];
       if (pipe(fds) != 0) throw std::runtime_error("pipe failed");
@@ -80,6 +126,8 @@ std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int 
       const pid_t pid = fork();
       if (pid < 0) throw std::runtime_error("fork failed");
       if (pid == 0) {
+        signal(SIGINT, SIG_DFL); // the parent's handler is for the parent
+        signal(SIGTERM, SIG_DFL);
         close(fds[0]);
         for (const Child& c : running)
           close(c.fd);
@@ -92,7 +140,7 @@ std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int 
     std::vector<pollfd> pfd;
     for (const Child& c : running)
       pfd.push_back({c.fd, POLLIN, 0});
-    if (poll(pfd.data(), pfd.size(), -1) < 0) {
+    if (poll(pfd.data(), pfd.size(), 250) < 0) {
       if (errno == EINTR) continue;
       throw std::runtime_error("poll failed");
     }

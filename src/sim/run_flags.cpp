@@ -62,12 +62,15 @@ SimConfig config_from_flags(const std::map<std::string, std::string>& v, const s
     c.height = s.height;
   }
   c.options.frames = v.count("frames") ? parse_int(v.at("frames"), "frames") : 1;
-  if (v.count("latency")) c.overrides.latency_s = parse_time(v.at("latency"), "--latency");
+  if (v.count("latency"))
+    c.overrides.latency_s = parse_time(v.at("latency"), "--latency", Unit::Required);
   if (v.count("bandwidth"))
-    c.overrides.bandwidth_Bps = parse_bandwidth(v.at("bandwidth"), "--bandwidth");
-  if (v.count("per-hop")) c.overrides.per_hop_s = parse_time(v.at("per-hop"), "--per-hop");
+    c.overrides.bandwidth_Bps = parse_bandwidth(v.at("bandwidth"), "--bandwidth", Unit::Required);
+  if (v.count("per-hop"))
+    c.overrides.per_hop_s = parse_time(v.at("per-hop"), "--per-hop", Unit::Required);
   if (v.count("cpu-scale")) c.overrides.cpu_scale = parse_positive(v.at("cpu-scale"), "cpu-scale");
-  if (v.count("memory")) c.overrides.memory_bytes = parse_bytes(v.at("memory"), "--memory");
+  if (v.count("memory"))
+    c.overrides.memory_bytes = parse_bytes(v.at("memory"), "--memory", Unit::Required);
   if (v.count("cost-scale"))
     c.overrides.cost_scale = parse_positive(v.at("cost-scale"), "cost-scale");
   for (const char* k : {"vertices", "output", "packet", "lines", "forward"})

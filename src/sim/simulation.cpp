@@ -171,6 +171,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   // same computation with every number multiplied by k.
   args.push_back("--cfg=surf/precision:" +
                  format_double(1e-12 * cfg.overrides.cost_scale.value_or(1.0)));
+  args.insert(args.end(), cfg.simgrid_args.begin(), cfg.simgrid_args.end());
   std::vector<char*> argv;
   for (auto& a : args)
     argv.push_back(a.data());

@@ -38,6 +38,8 @@ struct SimConfig {
   std::string scene_path;
   int width = 0, height = 0;           // > 0 overrides the scene's size
   bool compare_with_sequential = true; // render on the host and compare images
+  // Passed to SimGrid after zcube's own settings, so they win: "--cfg=name:value", "--log=...".
+  std::vector<std::string> simgrid_args;
 };
 
 struct SimResult {

@@ -64,6 +64,17 @@ TEST(Units, SimGridStyle) {
   EXPECT_THROW(parse_time("fast"), UsageError);
   EXPECT_THROW(parse_time("10parsecs"), UsageError);
   EXPECT_THROW(parse_bandwidth("-1MBps"), UsageError);
+  // Flags require the unit: `--latency 275` is not 275 seconds (issue 15).
+  EXPECT_THROW(parse_time("275", "--latency", Unit::Required), UsageError);
+  EXPECT_THROW(parse_bandwidth("2.8", "--bandwidth", Unit::Required), UsageError);
+  EXPECT_THROW(parse_bytes("16", "--memory", Unit::Required), UsageError);
+  EXPECT_DOUBLE_EQ(parse_time("275us", "--latency", Unit::Required), 275e-6);
+  try {
+    parse_time("275", "--latency", Unit::Required);
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("us"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("--latency"), std::string::npos) << e.what();
+  }
   EXPECT_EQ(format_double(0.1), "0.1");
 }
 

@@ -1,0 +1,64 @@
+#!/usr/bin/env bash
+# The plots of `zcube reproduce` are fit for a paper (issue 15, finding 8), read from what the plot
+# script says it drew (--describe): every series in the legend, out-of-memory points marked,
+# machine and P in the titles, log2 node axes, the Blazek panels on log scales, every fidelity
+# point labelled, axis labels with units, and the other formats.
+# usage: plots.sh SOURCE_DIR
+set -u
+src=$1
+py=/usr/bin/python3
+[ -x "$py" ] || py=python3
+if ! "$py" -c "import matplotlib" 2>/dev/null; then
+  echo "python3-matplotlib is not installed (scripts/setup.sh installs it)"
+  exit 77
+fi
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+mkdir -p "$tmp/r"
+for f in kurc/speedup.csv kurc/table2.csv charles/speedup.csv blazek/speedup.csv fidelity.csv; do
+  mkdir -p "$tmp/r/$(dirname "$f")"
+  cp "$src/results/$f" "$tmp/r/$f"
+done
+"$py" "$src/scripts/plot_results.py" --format svg --describe "$tmp/d.json" "$tmp/r" || exit 1
+"$py" - "$tmp/d.json" "$tmp/r" <<'PY'
+import csv, json, os, sys
+figs = {os.path.relpath(f["file"], sys.argv[2]): f for f in json.load(open(sys.argv[1]))}
+fail = []
+def check(cond, what):
+    print(("ok   " if cond else "FAIL ") + what)
+    if not cond:
+        fail.append(what)
+def rows(p):
+    return list(csv.DictReader(open(os.path.join(sys.argv[2], p))))
+
+check(set(figs) >= {"kurc/speedup.svg", "kurc/table2.svg", "charles/speedup.svg",
+                    "charles/efficiency.svg", "blazek/speedup.svg", "blazek/efficiency.svg",
+                    "fidelity.svg"}, "every figure drawn as SVG: %s" % sorted(figs))
+k = figs["kurc/speedup.svg"]
+schemes = {r["scheme"] for r in rows("kurc/speedup.csv")}
+check(schemes <= set(k["legend"]), "kurc speed-up legend has every scheme %s: %s" % (sorted(schemes), k["legend"]))
+ooms = sum(1 for r in rows("kurc/speedup.csv") if r["speedup"] == "oom")
+check("out of memory" in k["legend"] and sum(a["oom_points"] for a in k["axes"]) == ooms,
+      "kurc out-of-memory points marked: %d of %d" % (sum(a["oom_points"] for a in k["axes"]), ooms))
+check("iPSC/2" in k["title"] and "P =" in k["title"], "kurc title names machine and P: " + k["title"])
+check(all(a["xscale"] == "log" for a in k["axes"]), "kurc node axes log2")
+check(all(a["series"] == len(schemes) for a in k["axes"]), "kurc: every scheme a series in every panel")
+b = figs["blazek/speedup.svg"]
+counts = {r["spheres"] for r in rows("blazek/speedup.csv")}
+check(len([l for l in b["legend"] if "sphere" in l]) == len(counts), "blazek legend: %s" % b["legend"])
+nums = [int(l.split()[0]) for l in b["legend"] if "sphere" in l]
+check(nums == sorted(nums), "blazek legend in numeric order: %s" % nums)
+check(all(a["yscale"] == "log" for a in b["axes"]), "blazek panels on log scales (not flattened)")
+check("iPSC/2" in b["title"] and "P =" in b["title"], "blazek title: " + b["title"])
+f = figs["fidelity.svg"]
+runs = {r["run"] for r in rows("fidelity.csv")}
+check(runs <= set(f["legend"]), "fidelity: every run labelled")
+check(f["axes"][0]["points"] == len(rows("fidelity.csv")), "fidelity: every point drawn")
+c = figs["charles/speedup.svg"]
+check("iPSC/860" in c["axes"][0]["title"] and "P =" in c["axes"][0]["title"], "charles title")
+for name, fig in figs.items():
+    for a in fig["axes"]:
+        check(a["xlabel"] != "" and a["ylabel"] != "" or a is not fig["axes"][0] and a["xlabel"] != "",
+              "%s: axis labels %r / %r" % (name, a["xlabel"], a["ylabel"]))
+sys.exit(1 if fail else 0)
+PY

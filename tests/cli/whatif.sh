@@ -1,0 +1,163 @@
+#!/usr/bin/env bash
+# What-if studies a user can trust (issue 15) and the sweep/regress/reproduce items of issue 17:
+# units required on flags, overrides printed, SimGrid pass-through, --version, honest regress,
+# sweep speed-ups and clean --plot-y errors, sweeps that leave no stale files nor running children,
+# reproduce and calibrate that check --out first and never degrade committed results.
+# usage: whatif.sh ZCUBE SOURCE_DIR
+set -u
+zcube=$1
+src=$2
+cd "$src" || exit 1
+fail=0
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+say() { echo "$1 $2${3:+: $3}"; }
+# usage_error NAME WANT cmd...: exit 2, exactly one stderr line containing WANT, shorter than 300.
+usage_error() {
+  local name=$1 want=$2
+  shift 2
+  "$@" >"$tmp/out" 2>"$tmp/err"
+  local rc=$? lines len
+  lines=$(wc -l <"$tmp/err")
+  len=$(wc -c <"$tmp/err")
+  if [ "$rc" -ne 2 ] || [ "$lines" -ne 1 ] || [ "$len" -gt 300 ] || ! grep -q -- "$want" "$tmp/err"; then
+    say FAIL "$name" "exit $rc, $lines lines: $(head -c 400 "$tmp/err")"
+    fail=1
+  else
+    say ok "$name" "$(cat "$tmp/err")"
+  fi
+}
+expect() { # NAME CONDITION-TEXT (already evaluated: 0 ok)
+  if [ "$2" -eq 0 ]; then say ok "$1"; else
+    say FAIL "$1" "${3:-}"
+    fail=1
+  fi
+}
+small=(--algorithm sequential --size 32x32)
+
+# --- finding 2: numbers without units; overrides printed ---------------------------------------
+usage_error latency-no-unit "--latency.*unit" "$zcube" run "${small[@]}" --latency 275
+usage_error bandwidth-no-unit "--bandwidth.*unit" "$zcube" run "${small[@]}" --bandwidth 2.8
+usage_error per-hop-no-unit "--per-hop.*unit" "$zcube" run "${small[@]}" --per-hop 10
+usage_error memory-no-unit "--memory.*unit" "$zcube" run "${small[@]}" --memory 16
+usage_error sweep-latency-no-unit "--latency.*unit" "$zcube" sweep "${small[@]}" --latency 275,27 \
+  --out "$tmp/sw0"
+"$zcube" run "${small[@]}" --latency 27.5us --cpu-scale 0.5 >"$tmp/run.out" 2>&1
+rc=$?
+grep -q "what-if: --latency 27.5 us" "$tmp/run.out" && grep -q "what-if: --cpu-scale 0.5" "$tmp/run.out"
+expect overrides-printed $(( rc != 0 || $? != 0 )) "$(cat "$tmp/run.out")"
+
+# --- finding 6: SimGrid conventions -------------------------------------------------------------
+"$zcube" --version >"$tmp/v" 2>&1
+grep -q "^zcube [0-9].*SimGrid 3\." "$tmp/v"
+expect version $? "$(cat "$tmp/v")"
+usage_error cfg-malformed "--cfg" "$zcube" run "${small[@]}" --cfg network/model
+"$zcube" run "${small[@]}" --cfg network/crosstraffic:0 --log root.thres:warning >"$tmp/cfg.out" 2>&1
+rc=$?
+grep -q "SimGrid: --cfg=network/crosstraffic:0" "$tmp/cfg.out"
+expect cfg-passed $(( rc != 0 || $? != 0 )) "$(cat "$tmp/cfg.out")"
+
+# --- finding 4: an honest regress ---------------------------------------------------------------
+cat >"$tmp/runs.json" <<'EOF'
+{"runs": [{"name": "seq", "algorithm": "sequential", "size": "32x32"},
+          {"name": "pair4", "algorithm": "pair-rs", "nodes": "4", "size": "32x32",
+           "scene": "scenes/kurc/1pot.json"}]}
+EOF
+usage_error regress-unknown-set "bogus" "$zcube" regress --runs "$tmp/runs.json" --write "$tmp/A" \
+  --set bogus=1
+usage_error regress-bad-value "5parsecs" "$zcube" regress --runs "$tmp/runs.json" \
+  --against tests/golden --set latency=5parsecs
+"$zcube" regress --runs "$tmp/runs.json" --write "$tmp/A" >"$tmp/out" 2>&1
+expect regress-write-ok $? "$(cat "$tmp/out")"
+# A platform of 2 nodes: the 4-node run fails, and regress says so with a non-zero status.
+"$zcube" platform --machine ipsc2 --nodes 2 >"$tmp/two.xml"
+"$zcube" regress --runs "$tmp/runs.json" --write "$tmp/B" --set machine="$tmp/two.xml" \
+  >"$tmp/out" 2>"$tmp/err"
+rc=$?
+grep -q "pair4" "$tmp/err"
+expect regress-failed-run-exit-1 $(( rc != 1 || $? != 0 )) "exit $rc: $(cat "$tmp/err")"
+"$zcube" regress --against "$tmp/A" --with "$tmp/B" >"$tmp/out" 2>&1
+rc=$?
+# One row for the run whose status changed, not its whole report.
+rows=$(grep -c "^| pair4" "$tmp/out")
+expect regress-compact-diff $(( rc != 1 || rows != 1 )) "exit $rc, $rows rows: $(cat "$tmp/out")"
+! grep -q '{"' "$tmp/out"
+expect regress-no-json-blobs $? "$(cat "$tmp/out")"
+"$zcube" regress --against "$tmp/A" --with "$tmp/A" --rtol 0 >"$tmp/out" 2>&1
+expect regress-identical $? "$(cat "$tmp/out")"
+
+# --- finding 5 and issue 17: sweeps ---------------------------------------------------------------
+usage_error sweep-jobs-zero "--jobs" "$zcube" sweep --nodes 1,2 --jobs 0 --out "$tmp/sw1"
+usage_error sweep-plot-y-unknown "--plot-y" "$zcube" sweep "${small[@]}" --nodes 1,2 \
+  --plot-y bogus --out "$tmp/sw1"
+usage_error sweep-plot-y-no-baseline "baseline" "$zcube" sweep --algorithm pair-rs --nodes 2,4 \
+  --size 32x32 --scene scenes/kurc/1pot.json --plot-y speedup --out "$tmp/sw1"
+touch "$tmp/afile"
+usage_error sweep-out-file "--out" "$zcube" sweep "${small[@]}" --nodes 1,2 --out "$tmp/afile"
+"$zcube" sweep --algorithm sequential,pair-rs --nodes 1,2,4 --size 32x32 \
+  --scene scenes/kurc/1pot.json --latency 2.75ms,27.5us,275us --plot-y speedup --plot-format svg \
+  --jobs 2 --out "$tmp/sw2" >"$tmp/out" 2>&1
+expect sweep-speedup-runs $? "$(tail -5 "$tmp/out")"
+/usr/bin/python3 - "$tmp/sw2" <<'EOF'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1] + "/sweep.csv")))
+assert rows and "speedup" in rows[0] and "efficiency" in rows[0], rows[:1]
+for r in rows:
+    assert r["status"] == "ok", r
+    if r["algorithm"] == "pair-rs":
+        base = [b for b in rows if b["algorithm"] == "sequential" and b["nodes"] == "1"
+                and b["latency"] == r["latency"]][0]
+        sp = float(base["virtual_s"]) / float(r["virtual_s"])
+        assert abs(float(r["speedup"]) - sp) <= 1e-6 * sp, (r, sp)
+        assert abs(float(r["efficiency"]) - sp / int(r["nodes"])) <= 1e-6, r
+EOF
+expect sweep-speedup-columns $?
+test -s "$tmp/sw2/sweep.svg"
+expect sweep-plot-format-svg $?
+# --baseline adds the sequential run on one node for each combination of the other flags.
+"$zcube" sweep --algorithm pair-rs --nodes 2,4 --size 32x32 --scene scenes/kurc/1pot.json \
+  --baseline --no-plot --jobs 2 --out "$tmp/sw3" >"$tmp/out" 2>&1
+rc=$?
+n=$(grep -c ",sequential," "$tmp/sw3/sweep.csv")
+filled=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "speedup") c = i; next }
+                  $c != "" { k++ } END { print k + 0 }' "$tmp/sw3/sweep.csv")
+expect sweep-baseline $(( rc != 0 || n != 1 || filled != 3 )) "exit $rc, $n baselines, $filled speed-ups"
+
+# Ctrl-C (SIGINT to the whole process group, as a terminal sends it) or a SIGTERM to zcube alone:
+# no simulation outlives the sweep, and no stale sweep.csv stays behind.
+interrupt() { # NAME SIGNAL
+  mkdir -p "$tmp/$1"
+  echo "stale" >"$tmp/$1/sweep.csv"
+  set -m # its own process group, SIGINT not ignored
+  "$zcube" sweep --algorithm sequential --size 1024x1024 --memory 64MiB --frames 4,5,6,7 \
+    --jobs 2 --out "$tmp/$1" >"$tmp/$1.log" 2>&1 &
+  local pid=$! kids rc left
+  set +m
+  for _ in $(seq 100); do
+    [ "$(pgrep -P "$pid" | wc -l)" -ge 1 ] && break
+    sleep 0.1
+  done
+  kids=$(pgrep -P "$pid" | wc -l)
+  if [ "$2" = INT ]; then kill -INT -- "-$pid"; else kill -TERM "$pid"; fi
+  wait "$pid"
+  rc=$?
+  sleep 0.5
+  left=$(pgrep -g "$pid" | wc -l)
+  pkill -KILL -g "$pid" 2>/dev/null
+  expect "$1-kills-children" $(( kids < 1 || left != 0 || rc == 0 )) \
+    "children before $kids, left $left, exit $rc"
+  test ! -e "$tmp/$1/sweep.csv"
+  expect "$1-no-stale-csv" $?
+}
+interrupt sweep-ctrl-c INT
+interrupt sweep-sigterm TERM
+
+# --- finding 3 and issue 17: reproduce and calibrate ----------------------------------------------
+start=$(date +%s)
+usage_error reproduce-out-file "--out" "$zcube" reproduce kurc --out "$tmp/afile"
+expect reproduce-out-checked-first $(( $(date +%s) - start > 5 ))
+mkdir -p "$tmp/cal"
+echo '{}' >"$tmp/cal/fit.json"
+usage_error calibrate-keeps-fit "--overwrite" "$zcube" calibrate --out "$tmp/cal"
+
+exit $fail
