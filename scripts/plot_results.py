@@ -292,6 +292,9 @@ def sweep(path, x, y, out):
         sys.exit(f"plot_results.py: {path} has no column '{y}'")
     axes = [a["flag"] for a in doc["axes"]]
     rs = [r for r in all_rows if r.get("status") in ("ok", "out_of_memory")]
+    # The sequential baseline of a speed-up sweep is a point at (1, 1), not a series of its own.
+    if "algorithm" in all_rows[0] and any(r["algorithm"] != "sequential" for r in rs):
+        rs = [r for r in rs if r["algorithm"] != "sequential"]
     varying = [c for c in axes if c != x and len({r[c] for r in rs}) > 1]
     g = defaultdict(list)
     for r in rs:
@@ -308,12 +311,15 @@ def sweep(path, x, y, out):
             pts = [(r[x], number(r[y])) for r in ok]
             oom_x += [r[x] for r in grp if r["status"] == "out_of_memory"]
         ax.plot([p[0] for p in pts], [p[1] for p in pts], marker="o", ms=3, label=label,
-                color="C%d" % (i % 10))
+                color="C%d" % (i % 10), ls=("-", "--", ":")[i // 10 % 3])
     if oom_x:
         ax.plot(oom_x, [0.02] * len(oom_x), transform=ax.get_xaxis_transform(), label=OOM_LABEL,
                 **OOM_STYLE)
     if xs_numeric and rs and min(quantity(r[x]) for r in rs) > 0:
         ax.set_xscale("log", base=2 if x == "nodes" else 10)
+        if x == "nodes":
+            ticks = sorted({quantity(r[x]) for r in rs})
+            ax.set_xticks(ticks, [str(int(t)) for t in ticks])
     ax.set_xlabel(FLAG_LABELS.get(x, x))
     ylabel = COLUMN_LABELS.get(y)
     if ylabel is None and y.startswith("phase:"):

@@ -1,7 +1,7 @@
 #pragma once
 // Machine models as data: the network's message-cost formula, node memory, and the CPU cost
 // table (seconds per counted renderer operation). The built-in figures come from
-// ../shared/MACHINES.md (sources and confidence there); a platform XML carries the same numbers
+// docs/machines.md (sources and confidence there); a platform XML carries the same numbers
 // as properties, and a simulation reads them back from the XML, so a what-if study edits data.
 #include <array>
 #include <cstdint>

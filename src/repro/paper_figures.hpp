@@ -1,5 +1,5 @@
 #pragma once
-// The figures the seeds print (../shared/seeds), as data: the calibration's targets and the
+// The figures the papers print (docs/index.md cites them), as data: the calibration's targets and the
 // paper column of reports and of `zcube reproduce`. Held-out figures are not here, by design.
 #include <optional>
 #include <string>

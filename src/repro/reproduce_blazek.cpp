@@ -98,7 +98,9 @@ std::string write_blazek(const std::vector<int>& spheres, const Reports& reps,
       "Written by `zcube reproduce blazek" +
           std::string(full ? " --full" : "") +
           "` (src/repro/reproduce_blazek.cpp; `--full` for 1..2048 spheres, about 12 minutes on "
-          "two cores). Thesis: Blazek, *Parallel z-buffer rendering on the iPSC/2* (1991), ch. V "
+          "two cores). Thesis: E. M. Blazek, *Parallel Image Generation Using the Z-Buffering "
+          "Algorithm on a Medium Grained Distributed Memory Model Computer*, Oklahoma State "
+          "University, 1991, ch. V "
           "(methods), ch. VI (results: curves only, no printed figures, so nothing here is fitted "
           "to it). Machine: the iPSC/2 model calibrated on Kurc et al. (results/calibration/), "
           "circuit "

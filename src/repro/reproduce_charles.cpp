@@ -93,7 +93,8 @@ std::string write_charles(const Reports& reps, const std::string& dir) {
       dir + "/README.md",
       "# Charles, Lefevre, Miguet 1995: the load-balanced z-buffer on the simulated iPSC/860\n\n"
       "Written by `zcube reproduce charles` (src/repro/reproduce_charles.cpp). Paper: "
-      "../shared/seeds/charles-lefevre-miguet-1995_load-balanced-parallel-zbuffer.txt. "
+      "Charles, Lefèvre, Miguet, *An optimized and load-balanced portable parallel z-buffer*, "
+      "research report RR95-25, LIP, ENS Lyon, 1995. "
       "Algorithm: `elastic` (src/algo/elastic.cpp; every §4 step is a report phase), "
       "`--output device` (each node writes its slice to the output device, so the "
       "communication volume does not depend on the resolution, §6). Machine: the calibrated "

@@ -124,7 +124,8 @@ std::string write_kurc(const Reports& reps, const std::string& dir) {
       dir + "/README.md",
       "# Kurc, Aykanat, Ozguc: active pixel merging on the simulated iPSC/2\n\n"
       "Written by `zcube reproduce kurc` (src/repro/reproduce_kurc.cpp). Paper: "
-      "../shared/seeds/kurc-aykanat-ozguc_active-pixel-merging.txt. Scenes: scenes/kurc/ (teapot "
+      "Kurç, Aykanat, Özgüç, *Active Pixel Merging on Hypercube Multicomputers* (Bilkent "
+      "University). Scenes: scenes/kurc/ (teapot "
       "arrangements fitted to Table 1, see scenes/README.md). Machine: the calibrated iPSC/2 model "
       "(platforms/ipsc2-*.xml), circuit fidelity, 4 MB nodes.\n\n"
       "**The 16-node figures of Table 2 are the calibration's targets** (results/calibration/): "
