@@ -306,7 +306,10 @@ TEST(Reproduce, NeverDegradesTheFullBlazekTables) {
   const auto dir = std::filesystem::temp_directory_path() / "zcube-test-keep";
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir / "blazek");
-  std::filesystem::copy_file(kRoot + "/results/blazek/speedup.csv", dir / "blazek/speedup.csv");
+  // What `zcube reproduce blazek --full` writes: rows up to 2048 spheres.
+  std::ofstream(dir / "blazek/speedup.csv")
+      << "method,spheres,nodes,virtual_s,speedup,efficiency\n"
+         "node-initiated,64,32,1.5,20,0.6\nnode-initiated,2048,32,30,28,0.9\n";
   ReproduceOptions o;
   o.root = kRoot;
   o.out = dir.string();
@@ -320,6 +323,10 @@ TEST(Reproduce, NeverDegradesTheFullBlazekTables) {
   EXPECT_EQ(plan_directory(o, blazek_plan(o), &note), o.out + "/blazek");
   o.overwrite = false;
   EXPECT_EQ(plan_directory(o, kurc_plan(o), &note), o.out + "/kurc");
+  // Tables of the default grid are simply rewritten.
+  std::ofstream(dir / "blazek/speedup.csv")
+      << "method,spheres,nodes,virtual_s,speedup,efficiency\nnode-initiated,64,32,1.5,20,0.6\n";
+  EXPECT_EQ(plan_directory(o, blazek_plan(o), &note), o.out + "/blazek");
   std::filesystem::remove_all(dir);
 }
 
