@@ -20,10 +20,11 @@ for f in bin/zcube share/zcube/scenes/teapot.json share/zcube/platforms/README.m
 done
 mkdir "$tmp/elsewhere"
 cd "$tmp/elsewhere" || exit 1
-out=$("$tmp/moved/bin/zcube" run --algorithm pair-rs --nodes 4 --scene "$tmp/moved/share/zcube/scenes/kurc/1pot.json" --size 64x64 2>&1)
+out=$("$tmp/moved/bin/zcube" run --algorithm pair-rs --nodes 4 --size 64x64 \
+  --scene "$tmp/moved/share/zcube/scenes/kurc/1pot.json" --image pot.png 2>&1)
 rc=$?
 echo "$out"
-if [ $rc -ne 0 ] || ! grep -q "virtual time" <<<"$out"; then
+if [ $rc -ne 0 ] || ! grep -q "virtual time" <<<"$out" || [ ! -s pot.png ]; then
   echo "FAIL zcube run from the prefix: exit $rc"
   fail=1
 fi
