@@ -114,6 +114,19 @@ EOF
 expect sweep-speedup-columns $?
 test -s "$tmp/sw2/sweep.svg"
 expect sweep-plot-format-svg $?
+# The legend in numeric order (27.5us, 275us, 2.75ms; not as text), the machine in the title, a
+# y label with its meaning: read from what the plot script drew.
+/usr/bin/python3 scripts/plot_results.py --describe "$tmp/d.json" --sweep "$tmp/sw2/sweep.csv" \
+  nodes speedup "$tmp/sw2/again.png" &&
+  /usr/bin/python3 - "$tmp/d.json" <<'EOF'
+import json, sys
+f = json.load(open(sys.argv[1]))[0]
+a = f["axes"][0]
+assert f["legend"] == ["latency=27.5us", "latency=275us", "latency=2.75ms"], f["legend"]
+assert "machine=ipsc2" in a["title"] and a["xscale"] == "log", a
+assert a["ylabel"].startswith("speed-up") and a["xlabel"] == "nodes P", a
+EOF
+expect sweep-plot-legend-numeric-order $?
 # --baseline adds the sequential run on one node for each combination of the other flags.
 "$zcube" sweep --algorithm pair-rs --nodes 2,4 --size 32x32 --scene scenes/kurc/1pot.json \
   --baseline --no-plot --jobs 2 --out "$tmp/sw3" >"$tmp/out" 2>&1
