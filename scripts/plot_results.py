@@ -276,10 +276,11 @@ def fidelity(d):
     h += [Line2D([], [], color="grey", marker=m, ls="none", label=f) for f, m in marks.items()]
     ax.legend(handles=h, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
     ax.set_xscale("log")
+    ax.set_yscale("symlog", linthresh=1e-3)
     ax.set_xlabel("host wall time of the run (s)")
     ax.set_ylabel("|error| of the virtual time against circuit (%)")
     ax.set_title("Error against run time of the three network models\n"
-                 "(iPSC/2, iPSC/860 and Volvox models, P = 16)", fontsize=10)
+                 "(iPSC/2, iPSC/860 and Volvox models, P = 16, 128 and 1024)", fontsize=10)
     ax.grid(alpha=0.3)
     save(fig, os.path.join(d, "fidelity.png"))
 
