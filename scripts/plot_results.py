@@ -277,6 +277,7 @@ def fidelity(d):
     ax.legend(handles=h, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
     ax.set_xscale("log")
     ax.set_yscale("symlog", linthresh=1e-3)
+    ax.set_ylim(bottom=0)
     ax.set_xlabel("host wall time of the run (s)")
     ax.set_ylabel("|error| of the virtual time against circuit (%)")
     ax.set_title("Error against run time of the three network models\n"
