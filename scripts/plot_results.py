@@ -181,7 +181,9 @@ def kurc(d):
     if su:
         keys = list(dict.fromkeys((r["scene"], r["size"]) for r in su))
         colors = palette({r["scheme"] for r in su})
-        fig, axes = plt.subplots(1, len(keys), figsize=(4 * len(keys), 4.4), sharey=True)
+        fig, axes = plt.subplots(1, len(keys), figsize=(4 * len(keys), 4.4), sharey=True,
+                                 squeeze=False)
+        axes = axes[0]
         oom = False
         for ax, (scene, size) in zip(axes, keys):
             g = defaultdict(list)
@@ -241,7 +243,9 @@ def blazek(d, sub="blazek"):
     for ykey, fname, ylabel in (("speedup", "speedup.png", "speed-up over the sequential renderer"),
                                 ("efficiency", "efficiency.png", "efficiency (speed-up / P)")):
         # One panel per method, each on its own log2 scale: the weak methods are not flattened.
-        fig, axes = plt.subplots(1, len(methods), figsize=(4 * len(methods), 4.4), sharey=False)
+        fig, axes = plt.subplots(1, len(methods), figsize=(4 * len(methods), 4.4), sharey=False,
+                                 squeeze=False)
+        axes = axes[0]
         oom = False
         for ax, m in zip(axes, methods):
             g = defaultdict(list)

@@ -35,8 +35,14 @@ std::string top_readme(const ReproduceOptions& o, double wall_s, std::size_t poi
          "| [charles/](charles/README.md) | Charles, Lefevre, Miguet 1995 | speed-ups of the "
          "elastic z-buffer, hypercube and ring; Table 1 |\n"
          "| [blazek/](blazek/README.md) | Blazek 1991 | speed-up and efficiency of the four "
-         "decompositions (the committed copy is `zcube reproduce blazek --full`: 1..2048 "
-         "spheres, about 12 minutes) |\n"
+         "decompositions (" +
+         (o.full ? std::string("1..2048 spheres, `--full`")
+          : kept.empty()
+              ? std::string("1..64 spheres; `zcube reproduce blazek --full` for 1..2048, about "
+                            "12 minutes")
+              : std::string("the `--full` tables, kept; this run's 1..64 spheres are in "
+                            "[blazek-quick/](blazek-quick/README.md)")) +
+         ") |\n"
          "| [mpi/](mpi/README.md) | (this machine) | the same algorithms on MPI processes, "
          "measured "
          "against the prediction on the platform `zcube probe` wrote (scripts/mpi_vs_model.sh) "
@@ -69,7 +75,8 @@ std::string config_key(const SimConfig& c) {
                       {"scene", c.scene_path},
                       {"width", c.width},
                       {"height", c.height},
-                      {"compare", c.compare_with_sequential}};
+                      {"compare", c.compare_with_sequential},
+                      {"simgrid", c.simgrid_args}};
   const Overrides& v = c.overrides;
   const std::pair<const char*, const std::optional<double>*> over[] = {
       {"latency_s", &v.latency_s},       {"bandwidth_Bps", &v.bandwidth_Bps},
@@ -181,8 +188,8 @@ int reproduce(const ReproduceOptions& o) {
 
   if (o.plots) {
     if (!run_plot_script(o.root, {"--format", o.plot_format, o.out}))
-      std::cerr << "reproduce: plots not drawn (needs python3-matplotlib: scripts/setup.sh "
-                   "installs it)\n";
+      std::cerr << "reproduce: plots not drawn (scripts/plot_results.py failed; it needs "
+                   "python3-matplotlib, which scripts/setup.sh installs)\n";
   }
   if (o.verbose) std::cerr << "reproduce: wrote " << o.out << "/ in " << fixed(wall, 1) << " s\n";
   return status;
