@@ -274,8 +274,8 @@ def fidelity(d):
         if number(r["wall_s"]) is None:
             continue
         ax.scatter(number(r["wall_s"]), abs(number(r["rel_error"]) or 0) * 100, s=28,
-                   color="C%d" % (runs.index(r["run"]) % 10), marker=marks[r["fidelity"]])
-    h = [Line2D([], [], color="C%d" % (i % 10), marker="o", ls="none", label=run)
+                   color=plt.cm.tab20(runs.index(r["run"]) % 20), marker=marks[r["fidelity"]])
+    h = [Line2D([], [], color=plt.cm.tab20(i % 20), marker="o", ls="none", label=run)
          for i, run in enumerate(runs)]
     h += [Line2D([], [], color="grey", marker=m, ls="none", label=f) for f, m in marks.items()]
     ax.legend(handles=h, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
