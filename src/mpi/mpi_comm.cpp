@@ -61,7 +61,9 @@ void MpiComm::send(int dst, int tag, Bytes data) {
   const double t = MPI_Wtime();
   in_flight_.push_back(isend(dst, tag, std::move(data)));
   reap();
-  stats_.comm_s += MPI_Wtime() - t;
+  const double t1 = MPI_Wtime();
+  stats_.comm_s += t1 - t;
+  if (stats_.log) stats_.log->activity(Activity::Send, t - t0_, t1 - t0_);
 }
 
 void MpiComm::reap() {
@@ -78,6 +80,9 @@ SendHandle MpiComm::isend(int dst, int tag, Bytes data) {
   check_peer(dst, tag);
   stats_.bytes_sent += data.size();
   ++stats_.messages;
+  if (stats_.log)
+    stats_.log->sends.push_back(
+        {dst, tag, data.size(), message_hops(topology_, nodes_, rank_, dst), now()});
   return std::make_unique<MpiSend>(std::move(data), dst, tag, world_);
 }
 
@@ -87,11 +92,17 @@ Bytes MpiComm::recv(int src, int tag, int* from) {
   MPI_Status st;
   MPI_Probe(src == kAnySource ? MPI_ANY_SOURCE : src, tag, world_, &st);
   int n = 0;
+  const double arrived = MPI_Wtime(); // the probe returns once the message is there
   MPI_Get_count(&st, MPI_BYTE, &n);
   Bytes b(static_cast<std::size_t>(n));
   MPI_Recv(b.data(), n, MPI_BYTE, st.MPI_SOURCE, tag, world_, MPI_STATUS_IGNORE);
   reap();
-  stats_.comm_s += MPI_Wtime() - t;
+  const double t1 = MPI_Wtime();
+  stats_.comm_s += t1 - t;
+  if (stats_.log) {
+    stats_.log->activity(Activity::Wait, t - t0_, t1 - t0_);
+    stats_.log->recvs.push_back({st.MPI_SOURCE, tag, arrived - t0_, t1 - t0_});
+  }
   if (from) *from = st.MPI_SOURCE;
   return b;
 }

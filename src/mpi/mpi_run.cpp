@@ -92,6 +92,7 @@ SimResult run_mpi(const SimConfig& cfg) {
   const Scene scene = load_scene(cfg.scene_path, lo);
 
   NodeStats stats;
+  if (cfg.timeline) stats.log = std::make_shared<EventLog>();
   std::vector<FrameImage> images;
   MpiComm comm(MPI_COMM_WORLD, P, cfg.topology, stats);
   MpiContext ctx(comm, stats, scene, cfg.options, cfg.overrides.memory_bytes.value_or(0.0), images);

@@ -20,7 +20,9 @@ void RecordingContext::phase_end() {
   if (open_.empty()) return;
   auto [name, t0] = open_.back();
   open_.pop_back();
-  phase_totals_[name] += comm_.now() - t0;
+  const double t1 = comm_.now();
+  phase_totals_[name] += t1 - t0;
+  if (stats_.log) stats_.log->phases.push_back({name, int(open_.size()), t0, t1});
 }
 
 void RecordingContext::alloc(double bytes, const std::string& what) {

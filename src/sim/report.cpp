@@ -26,6 +26,7 @@ void to_json(nlohmann::json& j, const NodeRecord& r) {
        {"phase_work", work},
        {"work", r.work},
        {"metrics", r.metrics}};
+  if (r.stats.log) j["timeline"] = *r.stats.log;
 }
 
 void from_json(const nlohmann::json& j, NodeRecord& r) {
@@ -43,6 +44,9 @@ void from_json(const nlohmann::json& j, NodeRecord& r) {
     r.phase_work[n] = w.get<Counters>();
   r.work = j.at("work").get<Counters>();
   r.metrics = j.at("metrics");
+  r.stats.log = j.contains("timeline")
+                    ? std::make_shared<EventLog>(j.at("timeline").get<EventLog>())
+                    : nullptr;
 }
 
 void add_run_header(nlohmann::json& j, const RunHeader& h, const SimConfig& cfg,
@@ -134,6 +138,14 @@ void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, 
       {"messages", msgs}, {"bytes", bytes}, {"concurrent_volume_bytes", max_sent}};
   j["counters"] = total;
   j["load_imbalance"] = busy_mean > 0 ? (busy_max - busy_min) / busy_mean : 0.0;
+  std::vector<const EventLog*> logs;
+  std::vector<nlohmann::json> ranks;
+  for (const NodeRecord& rec : nodes) {
+    logs.push_back(rec.stats.log.get());
+    ranks.push_back(rec.rank);
+  }
+  if (std::any_of(logs.begin(), logs.end(), [](const EventLog* l) { return l != nullptr; }))
+    j["timeline"] = timeline_section(logs, ranks);
   // Algorithm metrics (node 0's) merge into the top level, objects key by key.
   for (auto& [k, v] : nodes.front().metrics.items()) {
     if (v.is_object() && j.contains(k) && j[k].is_object())

@@ -2,6 +2,7 @@
 // The report of DESIGN §4 from what each node recorded: shared by the SimGrid backend (virtual
 // times) and any other backend (measured times), so both write the same schema.
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,7 @@
 #include "raster/counters.hpp"
 #include "raster/framebuffer.hpp"
 #include "scene/scene.hpp"
+#include "sim/event_log.hpp"
 #include "sim/simulation.hpp"
 
 namespace zc {
@@ -19,6 +21,7 @@ struct NodeStats {
   double busy_s = 0, comm_s = 0, finish_s = 0;
   std::uint64_t bytes_sent = 0, messages = 0;
   double memory = 0, peak_memory = 0;
+  std::shared_ptr<EventLog> log; // the node's timeline; null unless one was asked for
 };
 
 // A picture (or, partial, rows of one) handed over by a node.
@@ -52,7 +55,7 @@ void add_run_header(nlohmann::json& j, const RunHeader& h, const SimConfig& cfg,
 
 // "phases", "per_node", "communication", "counters", "load_imbalance" and the algorithm's metrics
 // (node 0's, merged at the top level). `nodes` holds the P nodes in rank order, then the host if
-// it ran; total_s is the run's time (for idle_s).
+// it ran; total_s is the run's time (for idle_s). With the nodes' event logs, also "timeline".
 void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, int P,
                        double total_s);
 

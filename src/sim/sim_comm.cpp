@@ -16,7 +16,9 @@ public:
     const double t0 = sg::Engine::get_clock();
     delivery_.await_arrival(self_, *msg_);
     msg_ = nullptr;
-    stats_.comm_s += sg::Engine::get_clock() - t0;
+    const double t1 = sg::Engine::get_clock();
+    stats_.comm_s += t1 - t0;
+    if (stats_.log) stats_.log->activity(Activity::Send, t0, t1);
   }
   ~SimSendRequest() override {
     if (msg_)
@@ -41,6 +43,9 @@ SendHandle SimComm::isend(int dst, int tag, Bytes data) {
   check_rank(dst, "send");
   stats_.bytes_sent += data.size();
   stats_.messages += 1;
+  if (stats_.log)
+    stats_.log->sends.push_back(
+        {dst, tag, data.size(), message_hops(topology_, nodes_, rank_, dst), now()});
   return std::make_unique<SimSendRequest>(delivery_, rank_,
                                           delivery_.post(rank_, dst, tag, std::move(data)), stats_);
 }
@@ -54,7 +59,12 @@ Bytes SimComm::recv(int src, int tag, int* from) {
   const double t0 = sg::Engine::get_clock();
   TransitPtr m = delivery_.receive(rank_, src, tag);
   if (from) *from = m->src;
-  stats_.comm_s += sg::Engine::get_clock() - t0;
+  const double t1 = sg::Engine::get_clock();
+  stats_.comm_s += t1 - t0;
+  if (stats_.log) {
+    stats_.log->activity(Activity::Wait, t0, t1);
+    stats_.log->recvs.push_back({m->src, m->tag, m->arrival, t1});
+  }
   return std::move(m->data);
 }
 

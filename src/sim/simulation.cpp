@@ -199,6 +199,9 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   Delivery delivery(net, cfg.fidelity, hosts);
 
   std::vector<NodeStats> stats(P + 1);
+  if (cfg.timeline)
+    for (auto& s : stats)
+      s.log = std::make_shared<EventLog>();
   std::vector<std::unique_ptr<SimComm>> comms;
   std::vector<std::unique_ptr<SimContext>> ctxs;
   std::vector<FrameImage> images;

@@ -40,6 +40,7 @@ struct SimConfig {
   bool compare_with_sequential = true; // render on the host and compare images
   // Passed to SimGrid after zcube's own settings, so they win: "--cfg=name:value", "--log=...".
   std::vector<std::string> simgrid_args;
+  bool timeline = false; // record every node's events (the report's "timeline"; --trace, --gantt)
 };
 
 struct SimResult {
