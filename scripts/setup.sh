@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 PKGS=(build-essential cmake ccache pkg-config libsimgrid-dev libglm-dev libopenimageio-dev
       nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
-      libtinyobjloader-dev libssl-dev python3-matplotlib
+      libtinyobjloader-dev libssl-dev python3-matplotlib pajeng
       libopenmpi-dev openmpi-bin
       libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri)
 missing=()

@@ -6,12 +6,15 @@
 
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
+#include "cli/paths.hpp"
 #include "cli/sim_options.hpp"
 #include "raster/image_io.hpp"
 #include "repro/paper_figures.hpp"
 #include "scene/load.hpp"
 #include "sim/run_flags.hpp"
 #include "sim/simgrid_args.hpp"
+#include "trace/gantt.hpp"
+#include "trace/trace_file.hpp"
 #include "util/error.hpp"
 #ifdef ZCUBE_HAVE_MPI
 #include "mpi/mpi_run.hpp"
@@ -41,10 +44,21 @@ static nlohmann::json report_header(const SimConfig& cfg) {
           {"scene", {{"path", cfg.scene_path}, {"width", w}, {"height", h}}}};
 }
 
+// --trace FILE and --gantt FILE: where the run's timeline goes (none: not recorded).
+struct TimelineOutputs {
+  std::string trace, gantt;
+  bool wanted() const { return !trace.empty() || !gantt.empty(); }
+};
+
 // Writes the report and pictures and prints the summary (rank 0 only under MPI).
 static int finish(const SimResult& r, const std::string& report, const std::string& image,
-                  const std::string& depth) {
+                  const std::string& depth, const TimelineOutputs& tl) {
   if (!report.empty()) std::ofstream(report) << r.report.dump(2) << "\n";
+  if (!tl.trace.empty()) write_trace(r.report, tl.trace);
+  if (!tl.gantt.empty() && !draw_gantt(r.report, tl.gantt, source_root())) {
+    std::cerr << "zcube: error: --gantt " << tl.gantt << ": scripts/plot_gantt.py failed\n";
+    return 1;
+  }
   if (!r.ok) {
     std::cerr << "zcube: error: " << r.error << "\n";
     return 1;
@@ -102,6 +116,10 @@ static int cmd_run(std::vector<std::string> args) {
                  "sim (SimGrid, virtual time) or mpi (real processes under mpirun, measured time)")
       ->check(CLI::IsMember({"sim", "mpi"}))
       ->capture_default_str();
+  TimelineOutputs tl;
+  app.add_option("--trace", tl.trace,
+                 "write the run's timeline: FILE.json (Chrome/Perfetto) or FILE.trace (Paje)");
+  app.add_option("--gantt", tl.gantt, "draw a space-time diagram of the run: FILE.png|.svg|.pdf");
   bool list = false;
   app.add_flag("--list", list, "list the algorithms and exit");
   if (int rc = parse(app, args); rc >= 0) return rc;
@@ -122,6 +140,9 @@ static int cmd_run(std::vector<std::string> args) {
   cfg.simgrid_args = sf.simgrid_args();
   check_simgrid_args(cfg.simgrid_args);
   std::cout << describe_overrides(cfg);
+  if (!tl.trace.empty()) check_trace_path(tl.trace);
+  if (!tl.gantt.empty()) check_gantt_path(tl.gantt);
+  cfg.timeline = tl.wanted();
   // A speed-up figure of a paper needs the sequential time on the same machine: one more
   // simulation, in its own process and before this one (a forked child must not inherit a
   // SimGrid engine).
@@ -129,7 +150,7 @@ static int cmd_run(std::vector<std::string> args) {
 #ifdef ZCUBE_HAVE_MPI
     MpiSession mpi;
     SimResult r = run_mpi(cfg);
-    return mpi.rank() == 0 ? finish(r, report, image, depth) : 0;
+    return mpi.rank() == 0 ? finish(r, report, image, depth, tl) : 0;
 #else
     throw UsageError("--backend mpi: this zcube was built without MPI (scripts/setup.sh installs "
                      "libopenmpi-dev; then rebuild)");
@@ -148,7 +169,7 @@ static int cmd_run(std::vector<std::string> args) {
   }
   SimResult r = run_simulation(cfg);
   if (r.ok && seq_s) r.report["paper"] = paper_figures_for(r.report, seq_s);
-  return finish(r, report, image, depth);
+  return finish(r, report, image, depth, tl);
 }
 
 ZC_COMMAND("run", "simulate an algorithm on a machine model", cmd_run);

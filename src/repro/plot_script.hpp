@@ -9,5 +9,8 @@ namespace zc {
 // one (the python3-matplotlib scripts/setup.sh installs is its module; a python3 earlier on
 // PATH, e.g. pyenv's, may lack it). True when the script succeeded.
 bool run_plot_script(const std::string& root, const std::vector<std::string>& args);
+// The same for another script of the tree (`script` relative to root, e.g. scripts/plot_gantt.py).
+bool run_python_script(const std::string& root, const std::string& script,
+                       const std::vector<std::string>& args);
 
 } // namespace zc
