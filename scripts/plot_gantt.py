@@ -2,7 +2,7 @@
 """Space-time diagram of one traced zcube run, in the manner of ParaGraph (Heath & Etheridge 1991),
 the iPSC's own trace visualiser: nodes as rows, virtual time along x.
 
-usage: plot_gantt.py REPORT.json OUT.png|OUT.svg|OUT.pdf
+usage: plot_gantt.py REPORT.json OUT.png|OUT.svg|OUT.pdf [REPORT.json OUT ...]
 
 REPORT.json is a report with a "timeline" (zcube run --trace/--gantt/--report). Each row shows the
 node's phase (upper band, one colour per phase, legend) and what it does (lower band: compute,
@@ -109,26 +109,35 @@ def draw_messages(ax, msgs, row_of):
 
 
 def utilisation(ax, tracks, total):
-    # Nodes computing and nodes communicating (send or wait) over time, as step curves.
-    for kinds, colour, label in ((("compute",), ACTIVITY_COLOURS["compute"], "computing"),
-                                 (("send", "wait"), ACTIVITY_COLOURS["send"], "communicating")):
-        ev = []
-        for t in tracks:
-            for k, b, e in t["acts"]:
-                if k in kinds:
-                    ev += [(b, 1), (e, -1)]
-        ev.sort()
-        xs, ys, n = [0.0], [0], 0
-        for x, d in ev:
-            n += d
+    # Nodes computing, and above them nodes communicating (send or wait), over time (stacked steps).
+    ev = []
+    for t in tracks:
+        for k, b, e in t["acts"]:
+            if k != "idle":
+                c, m = (1, 0) if k == "compute" else (0, 1)
+                ev += [(b, c, m), (e, -c, -m)]
+    ev.sort()
+    xs, comp, comm = [0.0], [0], [0]
+    c = m = 0
+    for x, dc, dm in ev:
+        c, m = c + dc, m + dm
+        if x == xs[-1]:
+            comp[-1], comm[-1] = c, m
+        else:
             xs.append(x)
-            ys.append(n)
-        xs.append(total)
-        ys.append(n)
-        ax.step(xs, ys, where="post", color=colour, linewidth=0.9, label=label)
-    ax.set_ylim(0, len(tracks) * 1.05 + 0.5)
-    ax.set_ylabel("nodes")
-    ax.legend(loc="upper right", fontsize=7, ncol=2, frameon=False)
+            comp.append(c)
+            comm.append(m)
+    xs.append(total)
+    comp.append(c)
+    comm.append(m)
+    xs, comp, comm = np.array(xs), np.array(comp), np.array(comm)
+    ax.fill_between(xs, 0, comp, step="post", color=ACTIVITY_COLOURS["compute"], linewidth=0, label="computing")
+    ax.fill_between(xs, comp, comp + comm, step="post", color=ACTIVITY_COLOURS["send"], alpha=0.55, linewidth=0,
+                    label="communicating")
+    ax.axhline(len(tracks), color="0.5", linewidth=0.6, linestyle=":")
+    ax.set_ylim(0, len(tracks) * 1.08 + 0.2)
+    ax.set_ylabel("nodes busy")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.005, 1.0), fontsize=7, frameon=False)
 
 
 def read(report_path):
@@ -169,10 +178,14 @@ def layout(fig, ax, tracks):
 
 
 def main(argv):
-    if len(argv) != 3:
+    if len(argv) < 3 or len(argv) % 2 != 1:
         sys.exit(__doc__)
-    r, tracks, total = read(argv[1])
-    out = argv[2]
+    for i in range(1, len(argv), 2):
+        chart(argv[i], argv[i + 1])
+
+
+def chart(report_path, out):
+    r, tracks, total = read(report_path)
     nrows = len(tracks)
     exact = nrows <= MAX_EXACT_ROWS
     row_in = 0.26 if exact else 6.0 / nrows

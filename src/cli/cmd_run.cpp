@@ -9,11 +9,11 @@
 #include "cli/paths.hpp"
 #include "cli/sim_options.hpp"
 #include "raster/image_io.hpp"
+#include "repro/gantt_chart.hpp"
 #include "repro/paper_figures.hpp"
 #include "scene/load.hpp"
 #include "sim/run_flags.hpp"
 #include "sim/simgrid_args.hpp"
-#include "trace/gantt.hpp"
 #include "trace/trace_file.hpp"
 #include "util/error.hpp"
 #ifdef ZCUBE_HAVE_MPI

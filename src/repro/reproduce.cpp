@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "repro/calibrate.hpp"
+#include "repro/gantt_chart.hpp"
 #include "repro/plot_script.hpp"
 #include "repro/progress.hpp"
 #include "repro/table.hpp"
@@ -146,6 +147,9 @@ int reproduce(const ReproduceOptions& o) {
       const auto [it, fresh] = index_of.emplace(config_key(pt.cfg), cfgs.size());
       if (fresh) cfgs.push_back(pt.cfg);
       point_run.push_back(it->second);
+      // A chart's point records its timeline (which changes no result, so is not in the key).
+      for (const auto& g : p.gantt)
+        if (g.key == pt.key && o.plots) cfgs[it->second].timeline = true;
     }
   if (o.verbose && o.write)
     std::cerr << "reproduce: " << cfgs.size() << " simulations, " << o.jobs << " at a time\n";
@@ -157,7 +161,13 @@ int reproduce(const ReproduceOptions& o) {
   int status = 0;
   std::size_t i = 0;
   std::string summaries;
+  std::vector<std::pair<const nlohmann::json*, std::string>> charts;
   for (const auto& p : plans) {
+    for (const auto& g : p.gantt)
+      for (std::size_t k = 0; k < p.points.size(); ++k)
+        if (p.points[k].key == g.key && reps[point_run[i + k]].contains("timeline"))
+          charts.push_back(
+              {&reps[point_run[i + k]], dirs[std::size_t(&p - plans.data())] + "/" + g.file});
     Reports r;
     for (const auto& pt : p.points) {
       const auto& rep = reps[point_run[i++]];
@@ -187,6 +197,8 @@ int reproduce(const ReproduceOptions& o) {
   if (all) write_text(o.out + "/README.md", top_readme(o, wall, cfgs.size(), summaries, kept));
 
   if (o.plots) {
+    if (!charts.empty() && !draw_gantts(charts, o.root))
+      std::cerr << "reproduce: Gantt charts not drawn (scripts/plot_gantt.py failed)\n";
     if (!run_plot_script(o.root, {"--format", o.plot_format, o.out}))
       std::cerr << "reproduce: plots not drawn (scripts/plot_results.py failed; it needs "
                    "python3-matplotlib, which scripts/setup.sh installs)\n";

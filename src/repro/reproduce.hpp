@@ -43,9 +43,16 @@ struct ReproPoint {
 };
 using Reports = std::map<std::string, nlohmann::json>; // by point key
 
+// A space-time diagram of one point (issue 13): the point runs with a timeline, and reproduce
+// draws it into the plan's directory with scripts/plot_gantt.py.
+struct GanttChart {
+  std::string key, file, caption;
+};
+
 struct PaperPlan {
   std::string name; // the output subdirectory (empty: files at the top of `out`)
   std::vector<ReproPoint> points;
+  std::vector<GanttChart> gantt;
   // Writes the plan's files under dir from the reports of its points; returns what it has to say
   // in results/README.md (Markdown; empty for nothing).
   std::function<std::string(const Reports&, const std::string& dir)> write;
@@ -76,5 +83,7 @@ SimConfig repro_config(const std::string& machine, int nodes, const std::string&
 double virtual_s(const nlohmann::json& report);
 bool ok(const nlohmann::json& report);
 bool out_of_memory(const nlohmann::json& report);
+// The README section that shows a plan's Gantt charts.
+std::string gantt_markdown(const std::vector<GanttChart>& charts);
 
 } // namespace zc

@@ -39,6 +39,15 @@ std::string key(const std::string& m, int s, int n) {
   return m + "/" + std::to_string(s) + "/" + std::to_string(n);
 }
 
+// The representative runs drawn as space-time diagrams: node initiated beside host initiated,
+// 16 spheres on 16 nodes.
+std::vector<GanttChart> blazek_gantt() {
+  return {{key("node-initiated", 16, 16), "gantt_node-initiated.png",
+           "node initiated, 16 spheres, 16 nodes"},
+          {key("host-initiated", 16, 16), "gantt_host-initiated.png",
+           "host initiated, 16 spheres, 16 nodes"}};
+}
+
 std::string write_blazek(const std::vector<int>& spheres, const Reports& reps,
                          const std::string& dir) {
   const bool full = spheres.size() > sphere_counts(false).size();
@@ -121,7 +130,8 @@ std::string write_blazek(const std::vector<int>& spheres, const Reports& reps,
           std::to_string(big) + " spheres on 32 nodes: " + order + ": " + verdict +
           ".\n\n## Speed-up and efficiency (speedup.csv)\n\n" + tables +
           "`host_cost.csv`: the simulator's wall time and peak RSS per point (points ran in "
-          "parallel, so wall times are pessimistic).\n\nPlots: `speedup.png`, `efficiency.png`.\n");
+          "parallel, so wall times are pessimistic).\n\nPlots: `speedup.png`, `efficiency.png`.\n" +
+          gantt_markdown(blazek_gantt()));
   return "";
 }
 
@@ -167,6 +177,7 @@ PaperPlan blazek_plan(const ReproduceOptions& o) {
         p.points.push_back({key(m.name, s, n), c});
       }
   }
+  p.gantt = blazek_gantt();
   p.write = [spheres](const Reports& r, const std::string& dir) {
     return write_blazek(spheres, r, dir);
   };

@@ -29,6 +29,15 @@ std::string el_key(const Case& c, const std::string& topo, int n) {
   return "el/" + c.scene + "/" + std::to_string(c.size) + "/" + topo + "/" + std::to_string(n);
 }
 
+// The representative runs drawn as space-time diagrams: the skull stand-in on the cube and on the
+// ring, 16 nodes.
+std::vector<GanttChart> charles_gantt() {
+  return {{el_key(kCases[2], "cube", 16), "gantt_bone_cube.png",
+           "bone (skull stand-in), hypercube, 16 nodes"},
+          {el_key(kCases[2], "ring", 16), "gantt_bone_ring.png",
+           "bone (skull stand-in), ring, 16 nodes"}};
+}
+
 // Table 1 of the paper: teapot 256x256, 4 processors.
 struct Table1Row {
   int triangles, workload, percent, rows;
@@ -107,7 +116,8 @@ std::string write_charles(const Reports& reps, const std::string& dir) {
       "paper figure is held out anyway.\n\n## Paper figures\n\n" +
           cmp.markdown() + "\n## Speed-ups (speedup.csv)\n\n" + md.markdown() +
           "\n## Table 1: teapot 256x256 on 4 nodes (table1.csv)\n\n" + t1.markdown() + "\n" +
-          t1note + "\nPlots: `speedup.png`, `efficiency.png` (paper points as black stars).\n");
+          t1note + "\nPlots: `speedup.png`, `efficiency.png` (paper points as black stars).\n" +
+          gantt_markdown(charles_gantt()));
   return "";
 }
 
@@ -127,6 +137,7 @@ PaperPlan charles_plan(const ReproduceOptions& o) {
         p.points.push_back({el_key(c, topo, n), cfg});
       }
   }
+  p.gantt = charles_gantt();
   p.write = write_charles;
   return p;
 }

@@ -45,6 +45,12 @@ std::string su_key(const std::string& scheme, const std::string& scene, int size
   return "su/" + scheme + "/" + scene + "/" + std::to_string(size) + "/" + std::to_string(n);
 }
 
+// The representative runs drawn as space-time diagrams: AAPC-HBP beside PAIR-RS, 2 POT, 16 nodes.
+std::vector<GanttChart> kurc_gantt() {
+  return {{su_key("aapc-hbp", "2pot", 400, 16), "gantt_aapc-hbp.png", "AAPC-HBP, 2 POT, 16 nodes"},
+          {su_key("pair-rs", "2pot", 400, 16), "gantt_pair-rs.png", "PAIR-RS, 2 POT, 16 nodes"}};
+}
+
 const KurcPhaseFigure* paper_figure(const std::string& scene, const std::string& scheme,
                                     const std::string& phase) {
   for (const auto& f : kurc_table2_p16())
@@ -149,7 +155,8 @@ std::string write_kurc(const Reports& reps, const std::string& dir) {
           "message volume), load imbalance of the merge loads ((max - min) / mean, Fig. 2), TPG "
           "and TPF for every point. `table1.csv` (not written here): the fit of the six scenes to "
           "Table 1 by scripts/kurc_scenes.py.\n\nPlots: `table2.png` (phase bars, paper hatched), "
-          "`speedup.png`.\n");
+          "`speedup.png`.\n" +
+          gantt_markdown(kurc_gantt()));
   return "";
 }
 
@@ -177,6 +184,7 @@ PaperPlan kurc_plan(const ReproduceOptions& o) {
         for (int n : kNodes)
           p.points.push_back(
               {su_key(sch, s, size, n), repro_config("ipsc2", n, sch, scene_path(o, s), size)});
+  p.gantt = kurc_gantt();
   p.write = write_kurc;
   return p;
 }
