@@ -1,24 +1,83 @@
-// zcube platform: prints the SimGrid platform XML of a machine model.
+// zcube platform: writes the SimGrid platform file of a machine model, with what-if figures a user
+// can keep and run (`zcube run --machine that.xml`).
+#include <fstream>
 #include <iostream>
 
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
 #include "machine/platform_xml.hpp"
+#include "sim/run_flags.hpp"
+#include "sim/simulation.hpp"
 
 namespace zc::cli {
 
+namespace {
+
+// The machine with the what-ifs in force, written as the figures SimGrid reads.
+MachineSpec edited(MachineSpec spec, const Overrides& o, const std::string& command) {
+  if (o.latency_s) spec.net.startup_short_s = spec.net.startup_long_s = *o.latency_s;
+  if (o.bandwidth_Bps) spec.net.per_byte_s = 1.0 / *o.bandwidth_Bps;
+  if (o.per_hop_s) spec.net.per_hop_s = *o.per_hop_s;
+  if (o.memory_bytes) spec.memory_bytes = *o.memory_bytes;
+  const double lowest = spec.net.per_hop_s + kSmpiEnvelopeBytes * spec.net.per_byte_s;
+  if (std::min(spec.net.startup_short_s, spec.net.startup_long_s) < lowest)
+    throw UsageError("--latency must be at least the per-hop cost plus 16 bytes at the channel "
+                     "rate (" +
+                     std::to_string(lowest * 1e6) + " us): SMPI's receive overhead would be < 0");
+  spec.generated_by = "`" + command + "`";
+  return spec;
+}
+
+} // namespace
+
 static int cmd_platform(std::vector<std::string> args) {
-  CLI::App app{"Print the SimGrid platform XML of a machine model", "zcube platform"};
-  std::string machine = "ipsc2", topology = "cube";
-  int nodes = 1;
-  app.add_option("--machine", machine, "ipsc2, ipsc860 or volvox")->capture_default_str();
-  app.add_option("--nodes", nodes, "number of nodes")->capture_default_str();
-  app.add_option("--topology", topology, "cube or ring")->capture_default_str();
+  CLI::App app{"Write the SimGrid platform file of a machine model (what-ifs included)",
+               "zcube platform"};
+  std::map<std::string, std::string> flags = {
+      {"machine", "ipsc2"}, {"nodes", "1"}, {"topology", "cube"}};
+  std::string out;
+  app.add_option("--machine", flags["machine"], "ipsc2, ipsc860 or volvox")->capture_default_str();
+  app.add_option("--nodes", flags["nodes"], "number of nodes (cube: a power of two; up to 1024)")
+      ->capture_default_str();
+  app.add_option("--topology", flags["topology"], "cube or ring")->capture_default_str();
+  const std::pair<const char*, const char*> whatifs[] = {
+      {"latency", "message start-up, both protocols (e.g. 275us)"},
+      {"bandwidth", "channel bandwidth (e.g. 2.8MBps)"},
+      {"per-hop", "per-hop cost: the channel latency (e.g. 10us)"},
+      {"cpu-scale", "multiply every CPU cost: the host speed becomes clock / k"},
+      {"memory", "node memory (e.g. 16MiB)"}};
+  std::map<std::string, std::string> given;
+  for (const auto& [k, help] : whatifs)
+    app.add_option("--" + std::string(k), given[k], help);
+  app.add_option("-o,--output", out, "write to this file instead of standard output");
   if (int rc = parse(app, args); rc >= 0) return rc;
-  std::cout << platform_xml(machine_spec(machine), nodes, parse_topology(topology));
+
+  std::string command = "zcube platform --machine " + flags["machine"] + " --nodes " +
+                        flags["nodes"] + " --topology " + flags["topology"];
+  for (const auto& [k, v] : given)
+    if (!v.empty()) {
+      flags[k] = v;
+      command += " --" + k + " " + v;
+    }
+  const SimConfig c = config_from_flags(flags, "");
+  if (c.machine.ends_with(".xml"))
+    throw UsageError("--machine: expected ipsc2, ipsc860 or volvox (a built-in model)");
+  PlatformEdits pe;
+  pe.cpu_scale = c.overrides.cpu_scale.value_or(1.0);
+  const std::string xml =
+      platform_xml(edited(machine_spec(c.machine), c.overrides, command), c.nodes, c.topology, pe);
+  if (out.empty()) {
+    std::cout << xml;
+    return 0;
+  }
+  std::ofstream f(out);
+  f << xml;
+  f.close();
+  if (!f) throw InputError(out, 0, "cannot write the platform file");
   return 0;
 }
 
-ZC_COMMAND("platform", "print the SimGrid platform XML of a machine model", cmd_platform);
+ZC_COMMAND("platform", "write the SimGrid platform file of a machine model, what-ifs included",
+           cmd_platform);
 
 } // namespace zc::cli

@@ -1,23 +1,44 @@
 #pragma once
-// SimGrid 4.1 platform files of the modelled machines (DESIGN §5): hosts node0..nodeP-1 and the
-// host computer srm; one directed link per channel direction (full duplex) with the channel's
-// bandwidth and zero latency (start-up is charged by the communication layer, so that SimGrid's
-// flow sharing is not weighted by latency); explicit routes (e-cube on the cube). Every model
-// figure is a property: machine-level ones on the zone, the CPU cost table and memory on hosts.
+// SimGrid 4.1 platform files of the modelled machines (DESIGN §5; platforms/README.md). One zone
+// per machine: the nodes are a SimGrid TORUS cluster (a hypercube of dimension d is the torus
+// 2x2x...x2, whose dimension-order routing is e-cube; a ring is the 1-D torus P), the host computer
+// srm is a zone of its own linked to node0 by host-up/host-down. SimGrid reads every figure it
+// can use: channel bandwidth and latency (the cluster's bw and lat), the CPU clock (host speed),
+// the message start-up as SMPI's receive overhead (<config> smpi/or, piecewise by size: the two
+// protocols) and the host link's bandwidth and latency. What SimGrid has no notion of is a zcube.*
+// property of the machine zone, stated once: switching, node memory, cycles per counted operation.
 #include <string>
 
 #include "machine/machine.hpp"
 
 namespace zc {
 
-std::string platform_xml(const MachineSpec& spec, int nodes, Topology topology);
+// SMPI adds a 16-byte MPI envelope to every message it times (smpi_request.cpp); the generator
+// takes it off the start-up so that an SMPI program on the file sees zcube's T(m, h).
+constexpr double kSmpiEnvelopeBytes = 16;
 
-// Committed file name: platforms/MACHINE-P.xml (cube) or platforms/MACHINE-ring-P.xml.
+// What-ifs a written platform carries (`zcube platform --latency/--bandwidth/--cpu-scale`).
+struct PlatformEdits {
+  double cpu_scale = 1; // multiplies every CPU cost: the host speed is clock / cpu_scale
+};
+
+// The CPU clock of a machine's nodes (Hz), from its CPU model (machine/cpu_model.hpp): 16 MHz
+// 80386 (iPSC/2), 40 MHz i860 XR (iPSC/860, Volvox). Costs are written as cycles = seconds x clock.
+double cpu_clock_hz(const MachineSpec& spec);
+
+std::string platform_xml(const MachineSpec& spec, int nodes, Topology topology,
+                         const PlatformEdits& edits = {});
+
+// Default file name: MACHINE-P.xml (cube) or MACHINE-ring-P.xml.
 std::string platform_file_name(const std::string& machine, int nodes, Topology topology);
 
 // Names used in the XML.
 std::string node_host_name(int rank);
 constexpr const char* kHostComputerName = "srm";
-std::string channel_link_name(int from, int to);
+constexpr const char* kHostUpLink = "host-up";
+constexpr const char* kHostDownLink = "host-down";
+constexpr const char* kStartupConfig = "smpi/or";
+// SMPI charges smpi/or only on eager (detached) sends, below this size: every message, here.
+constexpr const char* kEagerConfig = "smpi/send-is-detached-thresh";
 
 } // namespace zc

@@ -133,7 +133,7 @@ std::string write_kurc(const Reports& reps, const std::string& dir) {
       "Kurç, Aykanat, Özgüç, *Active Pixel Merging on Hypercube Multicomputers* (Bilkent "
       "University). Scenes: scenes/kurc/ (teapot "
       "arrangements fitted to Table 1, see scenes/README.md). Machine: the calibrated iPSC/2 model "
-      "(platforms/ipsc2-*.xml), circuit fidelity, 4 MB nodes.\n\n"
+      "(`zcube platform --machine ipsc2`), circuit fidelity, 4 MB nodes.\n\n"
       "**The 16-node figures of Table 2 are the calibration's targets** (results/calibration/): "
       "their errors below are fit residuals, not an independent check. The 8-node rows (held out "
       "in the seed) and the speed-ups are predictions.\n\n"

@@ -20,6 +20,7 @@
 #include "repro/paper_figures.hpp"
 #include "scene/load.hpp"
 #include "sim/batch.hpp"
+#include "sim/platform_load.hpp"
 #include "sim/report.hpp"
 #include "sim/sim_context.hpp"
 #include "util/error.hpp"
@@ -27,105 +28,6 @@
 namespace zc {
 
 namespace sg = simgrid::s4u;
-
-namespace {
-
-double prop_number(const char* v, const std::string& key, const std::string& where) {
-  if (!v) throw InputError(where, 0, "platform property '" + key + "' is missing");
-  char* end = nullptr;
-  const double d = std::strtod(v, &end);
-  if (end == v || *end != '\0' || !(d >= 0))
-    throw InputError(where, 0, "platform property '" + key + "' is not a non-negative number");
-  return d;
-}
-
-struct PlatformModel {
-  std::string machine;
-  Topology topology = Topology::Cube;
-  int nodes = 0;
-  NetworkParams net;
-  std::vector<CostTable> cost; // per node
-  std::vector<double> memory;  // per node
-};
-
-PlatformModel read_platform(const sg::Engine& e, const std::string& where) {
-  PlatformModel m;
-  const sg::NetZone* z = e.get_netzone_root();
-  // The machine zone is the root, or its only child when the file wraps it.
-  if (!z->get_property("zcube.machine") && z->get_children().size() == 1) z = z->get_children()[0];
-  auto zp = [&](const std::string& k) { return z->get_property(k); };
-  if (!zp("zcube.machine"))
-    throw InputError(where, 0, "not a zcube platform (no zcube.machine property on its zone)");
-  m.machine = zp("zcube.machine");
-  m.topology = parse_topology(zp("zcube.topology") ? zp("zcube.topology") : "");
-  m.nodes = int(prop_number(zp("zcube.nodes"), "zcube.nodes", where));
-  const std::string sw = zp("zcube.switching") ? zp("zcube.switching") : "";
-  if (sw != "circuit" && sw != "store-and-forward")
-    throw InputError(where, 0, "zcube.switching must be circuit or store-and-forward");
-  m.net.switching = sw == "circuit" ? Switching::Circuit : Switching::StoreAndForward;
-  auto num = [&](const char* k) { return prop_number(zp(k), k, where); };
-  m.net.startup_short_s = num("zcube.startup_short_s");
-  m.net.startup_long_s = num("zcube.startup_long_s");
-  m.net.short_max_bytes = num("zcube.short_max_bytes");
-  m.net.per_byte_s = num("zcube.per_byte_s");
-  m.net.per_hop_s = num("zcube.per_hop_s");
-  m.net.host_startup_s = num("zcube.host_startup_s");
-  m.net.host_per_byte_s = num("zcube.host_per_byte_s");
-  for (int r = 0; r < m.nodes; ++r) {
-    const sg::Host* h = e.host_by_name_or_null(node_host_name(r));
-    if (!h) throw InputError(where, 0, "host '" + node_host_name(r) + "' is missing");
-    CostTable t;
-    for (auto& [id, v] : t.fields())
-      *v = prop_number(h->get_property(id), id, where);
-    m.cost.push_back(t);
-    m.memory.push_back(prop_number(h->get_property("memory_bytes"), "memory_bytes", where));
-  }
-  if (!e.host_by_name_or_null(kHostComputerName))
-    throw InputError(where, 0, "host 'srm' is missing");
-  return m;
-}
-
-void apply_overrides(const Overrides& o, PlatformModel& m, sg::Engine& e) {
-  auto& n = m.net;
-  if (o.latency_s) n.startup_short_s = n.startup_long_s = *o.latency_s;
-  if (o.bandwidth_Bps) {
-    if (!(*o.bandwidth_Bps > 0)) throw UsageError("--bandwidth must be positive");
-    n.per_byte_s = 1.0 / *o.bandwidth_Bps;
-  }
-  if (o.per_hop_s) n.per_hop_s = *o.per_hop_s;
-  if (o.memory_bytes)
-    for (auto& mem : m.memory)
-      mem = *o.memory_bytes;
-  double cpu = o.cpu_scale.value_or(1.0);
-  if (o.cost_scale) {
-    const double k = *o.cost_scale;
-    cpu *= k;
-    n.startup_short_s *= k;
-    n.startup_long_s *= k;
-    n.per_byte_s *= k;
-    n.per_hop_s *= k;
-    n.host_startup_s *= k;
-    n.host_per_byte_s *= k;
-  }
-  if (cpu != 1.0)
-    for (auto& c : m.cost)
-      c = c.scaled(cpu);
-  // The links carry the per-byte cost under the flow model.
-  for (sg::Link* l : e.get_all_links()) {
-    const std::string name = l->get_name();
-    const double per_byte = name.rfind("host-", 0) == 0 ? n.host_per_byte_s : n.per_byte_s;
-    l->set_bandwidth(per_byte > 0 ? 1.0 / per_byte : 1e15);
-  }
-}
-
-std::string write_temp_platform(const std::string& xml, const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path();
-  const std::string path = (dir / ("zcube-" + std::to_string(getpid()) + "-" + name)).string();
-  std::ofstream(path) << xml;
-  return path;
-}
-
-} // namespace
 
 SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   const auto wall0 = std::chrono::steady_clock::now();
@@ -144,19 +46,19 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   }
   const Scene& scene = preloaded ? *preloaded : loaded;
 
-  // Platform: a built-in machine is generated on the fly (identical to platforms/), a path is
-  // loaded as given.
-  std::string platform_path, platform_label, tmp;
+  // Platform: a built-in machine is generated on the fly for any P (`zcube platform` writes the
+  // same text), a path is loaded as given.
+  std::string platform_label;
   const bool is_file = cfg.machine.size() > 4 && cfg.machine.ends_with(".xml");
+  std::string builtin_xml;
   if (is_file) {
-    if (!std::filesystem::exists(cfg.machine)) throw InputError(cfg.machine, 0, "file not found");
-    platform_path = platform_label = cfg.machine;
+    if (!std::filesystem::is_regular_file(cfg.machine))
+      throw InputError(cfg.machine, 0, "file not found");
+    platform_label = cfg.machine;
   } else {
     check_node_count(cfg.topology, cfg.nodes);
-    const std::string name = platform_file_name(cfg.machine, cfg.nodes, cfg.topology);
-    tmp = platform_path =
-        write_temp_platform(platform_xml(machine_spec(cfg.machine), cfg.nodes, cfg.topology), name);
-    platform_label = "platforms/" + name;
+    builtin_xml = platform_xml(machine_spec(cfg.machine), cfg.nodes, cfg.topology);
+    platform_label = "platforms/" + platform_file_name(cfg.machine, cfg.nodes, cfg.topology);
   }
 
   std::vector<std::string> args = {"zcube",
@@ -176,14 +78,12 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   for (auto& a : args)
     argv.push_back(a.data());
   int argc = int(argv.size());
+  declare_platform_flags();
   sg::Engine e(&argc, argv.data());
-  try {
-    e.load_platform(platform_path);
-  } catch (const std::exception& ex) {
-    if (!tmp.empty()) std::filesystem::remove(tmp);
-    throw InputError(platform_label, 0, std::string("cannot load platform: ") + ex.what());
-  }
-  if (!tmp.empty()) std::filesystem::remove(tmp);
+  if (is_file)
+    load_platform_file(e, cfg.machine);
+  else
+    load_platform_text(e, builtin_xml, platform_label);
   PlatformModel pm = read_platform(e, platform_label);
   if (is_file && cfg.nodes != pm.nodes && cfg.nodes != 0)
     throw UsageError("--nodes " + std::to_string(cfg.nodes) + " but " + platform_label +

@@ -40,4 +40,32 @@ echo '{"runs": [{"name": "a", "bogus": "1"}]}' >"$tmp/runs2.json"
 check regress-bad-flag "bogus" "$zcube" regress --runs "$tmp/runs2.json" --against "$tmp"
 check regress-no-dir "nope" "$zcube" regress --against "$tmp/nope" --with "$tmp"
 check reproduce-unknown-paper "paper" "$zcube" reproduce frobnicate
+# Bad platform files (issue 17): one line naming the file and the attribute, exit 2, before the
+# simulation; the generated platform of a built-in machine never leaves a temporary file.
+for f in "$data"/bad_platform/*.xml; do
+  name=$(basename "$f")
+  case "$name" in
+  bandwidth_* | host_bandwidth_*) attr='bw\|bandwidth' ;;
+  latency_* | host_latency_*) attr='lat\|latency' ;;
+  speed_*) attr='speed' ;;
+  startup_*) attr='smpi/or' ;;
+  cycles_*) attr='zcube.cycles.spans' ;;
+  memory_*) attr='zcube.node_memory' ;;
+  nodes_*) attr='radical\|topo_parameters\|zcube.topology' ;;
+  switching_*) attr='zcube.switching' ;;
+  *) attr='.' ;;
+  esac
+  check "platform $name" "$name: .*\($attr\)" "$zcube" run --machine "$f" --algorithm sequential --size 8x8
+done
+mkdir -p "$tmp/t"
+for flags in "--cost-scale 1e-300" "--nodes 3" "--latency -1us" "--algorithm bogus"; do
+  # shellcheck disable=SC2086
+  TMPDIR="$tmp/t" "$zcube" run --machine ipsc2 --size 8x8 $flags >/dev/null 2>&1
+done
+if [ -n "$(ls -A "$tmp/t")" ]; then
+  echo "FAIL failed runs left files in TMPDIR: $(ls "$tmp/t")"
+  fail=1
+else
+  echo "ok   failed runs leave no temporary platform"
+fi
 exit $fail

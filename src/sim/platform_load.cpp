@@ -1,0 +1,321 @@
+#include "sim/platform_load.hpp"
+
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+
+#include <xbt/config.hpp>
+
+#include "machine/platform_xml.hpp"
+#include "machine/units.hpp"
+#include "sim/simulation.hpp"
+#include "util/error.hpp"
+
+namespace zc {
+
+namespace sg = simgrid::s4u;
+
+void declare_platform_flags() {
+  static bool declared = false;
+  if (declared) return;
+  declared = true;
+  simgrid::config::declare_flag<std::string>(
+      kStartupConfig, "Receive overhead of SMPI, read by zcube as the message start-up", "0:0:0");
+}
+
+namespace {
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::size_t at = 0;
+  for (std::size_t next; (next = s.find(sep, at)) != s.npos; at = next + 1)
+    out.push_back(s.substr(at, next - at));
+  out.push_back(s.substr(at));
+  return out;
+}
+
+// SimGrid aborts the process (xbt_assert) on a cluster whose radicals and torus dimensions
+// disagree, and throws a bare "stoi" on a huge dimension: check those attributes first.
+void check_clusters(const std::string& xml, const std::string& label) {
+  static const std::regex tag(R"(<cluster\b[^>]*>)"), attr(R"re(([\w]+)\s*=\s*"([^"]*)")re");
+  static const std::regex integer(R"(\d{1,4})");
+  for (std::sregex_iterator t(xml.begin(), xml.end(), tag), end; t != end; ++t) {
+    std::map<std::string, std::string> a;
+    const std::string text = t->str();
+    for (std::sregex_iterator m(text.begin(), text.end(), attr); m != end; ++m)
+      a[(*m)[1]] = (*m)[2];
+    auto bad = [&](const std::string& name, const std::string& why) {
+      return InputError(label, 0, "cluster " + name + "=\"" + a[name] + "\": " + why);
+    };
+    long radicals = 0;
+    for (const std::string& part : split(a["radical"], ',')) {
+      const auto dash = part.find('-');
+      const std::string lo = part.substr(0, dash),
+                        hi = dash == part.npos ? lo : part.substr(dash + 1);
+      if (!std::regex_match(lo, integer) || !std::regex_match(hi, integer) ||
+          std::stol(hi) < std::stol(lo))
+        throw bad("radical", "expected node numbers a-b with 0 <= a <= b < 10000");
+      radicals += std::stol(hi) - std::stol(lo) + 1;
+    }
+    if (radicals > 1024) throw bad("radical", "zcube simulates at most 1024 nodes");
+    if (a["topology"] != "TORUS") continue;
+    long product = 1;
+    for (const std::string& d : split(a["topo_parameters"], ',')) {
+      if (!std::regex_match(d, integer) || std::stol(d) < 1)
+        throw bad("topo_parameters", "expected dimensions 1..1024 separated by commas");
+      product *= std::stol(d);
+      if (product > 1024) throw bad("topo_parameters", "zcube simulates at most 1024 nodes");
+    }
+    if (product != radicals)
+      throw bad("radical", std::to_string(radicals) + " nodes, but the torus " +
+                               a["topo_parameters"] + " has " + std::to_string(product));
+  }
+}
+
+void load(sg::Engine& e, const std::string& path, const std::string& label) {
+  try {
+    e.load_platform(path);
+  } catch (const std::exception& ex) {
+    throw InputError(label, 0, std::string("cannot load platform: ") + ex.what());
+  }
+}
+
+} // namespace
+
+void load_platform_text(sg::Engine& e, const std::string& xml, const std::string& label) {
+  // An anonymous in-memory file: nothing is left behind whatever happens to the run.
+  const int fd = memfd_create("zcube-platform", MFD_CLOEXEC);
+  if (fd < 0) throw std::runtime_error("memfd_create failed for " + label);
+  const bool written = ::write(fd, xml.data(), xml.size()) == ssize_t(xml.size());
+  if (!written) {
+    ::close(fd);
+    throw std::runtime_error("cannot write the platform of " + label);
+  }
+  try {
+    load(e, "/proc/self/fd/" + std::to_string(fd), label);
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
+  ::close(fd);
+}
+
+void load_platform_file(sg::Engine& e, const std::string& path) {
+  if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, "file not found");
+  std::ifstream f(path);
+  std::stringstream text;
+  text << f.rdbuf();
+  if (!f) throw InputError(path, 0, "cannot read the file");
+  check_clusters(text.str(), path);
+  load(e, path, path);
+}
+
+namespace {
+
+// A finite number >= lo (> lo when strict); `what` names the attribute in the error.
+double checked(double v, const std::string& where, const std::string& what, double lo = 0,
+               bool strict = false) {
+  if (!std::isfinite(v) || v < lo || (strict && v == lo))
+    throw InputError(where, 0,
+                     what + " = " + format_double(v) + ": expected a finite number " +
+                         (strict ? "> " : ">= ") + format_double(lo));
+  return v;
+}
+
+double number(const std::string& text, const std::string& where, const std::string& what) {
+  char* end = nullptr;
+  const double d = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(d))
+    throw InputError(where, 0, what + " = '" + text + "': expected a finite number");
+  return d;
+}
+
+// smpi/or "size:offset:factor;...": zcube reads one constant offset per protocol, the short one
+// from size 0 and the long one above the second section's size.
+void read_startup(const std::string& text, const std::string& where, NetworkParams& n,
+                  double& short_overhead, double& long_overhead) {
+  const std::string what = std::string("<config> ") + kStartupConfig;
+  std::vector<std::array<double, 3>> sections;
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    const std::size_t semi = std::min(text.find(';', at), text.size());
+    const std::string s = text.substr(at, semi - at);
+    const auto c1 = s.find(':'), c2 = s.find(':', c1 == s.npos ? s.size() : c1 + 1);
+    if (c1 == s.npos || c2 == s.npos)
+      throw InputError(where, 0, what + " section '" + s + "': expected size:offset:factor");
+    sections.push_back({number(s.substr(0, c1), where, what + " size"),
+                        number(s.substr(c1 + 1, c2 - c1 - 1), where, what + " offset"),
+                        number(s.substr(c2 + 1), where, what + " factor")});
+    at = semi + 1;
+  }
+  if (sections.size() > 2 || sections[0][0] != 0)
+    throw InputError(where, 0,
+                     what + " = '" + text +
+                         "': zcube reads one section from size 0 and at most one more (the long "
+                         "protocol)");
+  for (const auto& s : sections) {
+    checked(s[1], where, what + " offset");
+    if (s[2] != 0) throw InputError(where, 0, what + " factor: zcube reads 0 only");
+  }
+  short_overhead = sections[0][1];
+  long_overhead = sections.back()[1];
+  n.short_max_bytes = sections.size() == 2 ? checked(sections[1][0], where, what + " size") : 100;
+}
+
+int count_nodes(const sg::Engine& e, const std::string& where) {
+  int P = 0;
+  while (e.host_by_name_or_null(node_host_name(P)))
+    ++P;
+  if (P == 0) throw InputError(where, 0, "no host node0: not a zcube platform");
+  if (!e.host_by_name_or_null(kHostComputerName))
+    throw InputError(where, 0, std::string("host '") + kHostComputerName + "' is missing");
+  if (int(e.get_host_count()) != P + 1)
+    throw InputError(where, 0, "hosts must be node0..nodeP-1 and srm");
+  return P;
+}
+
+// The file's routes must be the topology's: hop counts from node0 (e-cube on the cube).
+void check_routes(const sg::Engine& e, const PlatformModel& m, const std::string& where) {
+  const sg::Host* from = e.host_by_name(node_host_name(0));
+  for (int r = 1; r < m.nodes; ++r) {
+    std::vector<sg::Link*> links;
+    from->route_to(e.host_by_name(node_host_name(r)), links, nullptr);
+    if (int(links.size()) != hops(m.topology, m.nodes, 0, r))
+      throw InputError(where, 0,
+                       "route node0 -> " + node_host_name(r) + " has " +
+                           std::to_string(links.size()) + " links, a " + topology_name(m.topology) +
+                           " of " + std::to_string(m.nodes) + " nodes has " +
+                           std::to_string(hops(m.topology, m.nodes, 0, r)));
+  }
+}
+
+void read_links(const sg::Engine& e, const std::string& where, NetworkParams& n) {
+  bool channel_seen = false;
+  for (const sg::Link* l : e.get_all_links()) {
+    const std::string name = l->get_name();
+    if (name == "__loopback__") continue;
+    const bool host = name == kHostUpLink || name == kHostDownLink;
+    const std::string what = "link '" + name + "' ";
+    const double bw = checked(l->get_bandwidth(), where, what + "bandwidth", 0, true);
+    const double lat = checked(l->get_latency(), where, what + "latency");
+    double& per_byte = host ? n.host_per_byte_s : n.per_byte_s;
+    double& latency = host ? n.host_startup_s : n.per_hop_s;
+    const bool first = host ? per_byte == 0 : !channel_seen;
+    if (!first && (1.0 / bw != per_byte || lat != latency))
+      throw InputError(where, 0, what + "differs from the others: zcube models identical channels");
+    per_byte = 1.0 / bw;
+    latency = lat;
+    channel_seen |= !host;
+  }
+  if (n.host_per_byte_s == 0)
+    throw InputError(where, 0, std::string("link '") + kHostUpLink + "' is missing");
+}
+
+const char* zone_prop(const sg::NetZone* z, const std::string& key, const std::string& where) {
+  const char* v = z->get_property(key);
+  if (!v) throw InputError(where, 0, "zone property '" + key + "' is missing");
+  return v;
+}
+
+} // namespace
+
+PlatformModel read_platform(const sg::Engine& e, const std::string& where) {
+  PlatformModel m;
+  const sg::NetZone* z = e.get_netzone_root();
+  // The machine zone is the root, or its only child when the file wraps it.
+  if (!z->get_property("zcube.machine") && z->get_children().size() == 1) z = z->get_children()[0];
+  if (!z->get_property("zcube.machine"))
+    throw InputError(where, 0, "not a zcube platform (no zcube.machine property on its zone)");
+  m.machine = zone_prop(z, "zcube.machine", where);
+  m.topology = parse_topology(zone_prop(z, "zcube.topology", where));
+  const std::string sw = zone_prop(z, "zcube.switching", where);
+  if (sw != "circuit" && sw != "store-and-forward")
+    throw InputError(where, 0,
+                     "zcube.switching = '" + sw + "': expected circuit or store-and-forward");
+  m.net.switching = sw == "circuit" ? Switching::Circuit : Switching::StoreAndForward;
+  m.nodes = count_nodes(e, where);
+  try {
+    check_node_count(m.topology, m.nodes);
+  } catch (const UsageError&) {
+    throw InputError(where, 0,
+                     "zcube.topology = " + std::string(topology_name(m.topology)) + " with " +
+                         std::to_string(m.nodes) + " nodes: a " + topology_name(m.topology) +
+                         (m.topology == Topology::Cube ? " needs a power of two up to 1024"
+                                                       : " has 1 to 1024 nodes"));
+  }
+  check_routes(e, m, where);
+
+  read_links(e, where, m.net);
+  double short_o = 0, long_o = 0;
+  read_startup(simgrid::config::get_value<std::string>(kStartupConfig), where, m.net, short_o,
+               long_o);
+  // start-up = receive overhead + the first hop's latency + SMPI's envelope at the channel rate.
+  const double fixed = m.net.per_hop_s + kSmpiEnvelopeBytes * m.net.per_byte_s;
+  m.net.startup_short_s = short_o + fixed;
+  m.net.startup_long_s = long_o + fixed;
+
+  const double memory =
+      parse_bytes(zone_prop(z, "zcube.node_memory", where), where + ": zcube.node_memory");
+  checked(memory, where, "zcube.node_memory", 0, true);
+  CostTable cycles;
+  for (auto& [id, v] : cycles.fields()) {
+    const std::string key = "zcube.cycles." + id.substr(5);
+    *v = checked(number(zone_prop(z, key, where), where, key), where, key);
+  }
+  for (int r = 0; r < m.nodes; ++r) {
+    const sg::Host* h = e.host_by_name(node_host_name(r));
+    const double speed =
+        checked(h->get_speed(), where, "host '" + h->get_name() + "' speed", 0, true);
+    CostTable seconds = cycles;
+    for (auto& [id, v] : seconds.fields())
+      *v /= speed;
+    m.cost.push_back(seconds);
+    m.memory.push_back(memory);
+  }
+  return m;
+}
+
+void apply_overrides(const Overrides& o, PlatformModel& m, sg::Engine& e) {
+  auto& n = m.net;
+  if (o.latency_s) n.startup_short_s = n.startup_long_s = *o.latency_s;
+  if (o.bandwidth_Bps) {
+    if (!(*o.bandwidth_Bps > 0)) throw UsageError("--bandwidth must be positive");
+    n.per_byte_s = 1.0 / *o.bandwidth_Bps;
+  }
+  if (o.per_hop_s) n.per_hop_s = *o.per_hop_s;
+  if (o.memory_bytes)
+    for (auto& mem : m.memory)
+      mem = *o.memory_bytes;
+  double cpu = o.cpu_scale.value_or(1.0);
+  if (o.cost_scale) {
+    const double k = *o.cost_scale;
+    cpu *= k;
+    n.startup_short_s *= k;
+    n.startup_long_s *= k;
+    n.per_byte_s *= k;
+    n.per_hop_s *= k;
+    n.host_startup_s *= k;
+    n.host_per_byte_s *= k;
+  }
+  if (cpu != 1.0)
+    for (auto& c : m.cost)
+      c = c.scaled(cpu);
+  for (sg::Link* l : e.get_all_links()) {
+    const std::string name = l->get_name();
+    if (name == "__loopback__") continue;
+    const bool host = name == kHostUpLink || name == kHostDownLink;
+    const double per_byte = host ? n.host_per_byte_s : n.per_byte_s;
+    l->set_bandwidth(per_byte > 0 ? 1.0 / per_byte : 1e15);
+    l->set_latency(0);
+  }
+}
+
+} // namespace zc

@@ -1,0 +1,43 @@
+#pragma once
+// Loads a platform file into the SimGrid engine and reads the machine model back from what
+// SimGrid loaded (platforms/README.md): channel bandwidth and latency from the links, start-up from
+// SMPI's receive overhead (smpi/or), CPU speed from the hosts, switching, memory and cycles from
+// the machine zone's zcube.* properties. Every figure is checked (finite, in range) and a bad one
+// is an InputError naming the file and the attribute, before any simulation starts.
+#include <string>
+#include <vector>
+
+#include <simgrid/s4u.hpp>
+
+#include "machine/machine.hpp"
+
+namespace zc {
+
+struct Overrides;
+
+struct PlatformModel {
+  std::string machine;
+  Topology topology = Topology::Cube;
+  int nodes = 0;
+  NetworkParams net;
+  std::vector<CostTable> cost; // per node: cycles / host speed
+  std::vector<double> memory;  // per node
+};
+
+// Declares the configuration flags a zcube platform sets that SimGrid declares only under SMPI
+// (smpi/or), so that an s4u engine accepts the file; call before creating the engine.
+void declare_platform_flags();
+
+// Loads `xml` (the text of a built-in machine) or the file `path` into `e`; `label` names it in
+// errors. No temporary file is written.
+void load_platform_text(simgrid::s4u::Engine& e, const std::string& xml, const std::string& label);
+void load_platform_file(simgrid::s4u::Engine& e, const std::string& path);
+
+PlatformModel read_platform(const simgrid::s4u::Engine& e, const std::string& label);
+
+// The what-if overrides, then the links set to what the fidelities need: bandwidth from the model,
+// zero latency (zcube charges start-up and hops itself, so SimGrid's flow sharing is not weighted
+// by route latency).
+void apply_overrides(const Overrides& o, PlatformModel& m, simgrid::s4u::Engine& e);
+
+} // namespace zc
