@@ -39,13 +39,8 @@ std::vector<std::pair<int, int>> route(Topology t, int nodes, int src, int dst) 
     }
     return r;
   }
-  // The direction SimGrid's torus routing takes (TorusZone::get_local_route), so that the platform
-  // file's routes are the ones the circuit fidelity holds: the shorter way; on a tie clockwise,
-  // except from node P/2 to node 0.
-  const int half = nodes / 2;
-  const bool clockwise =
-      (dst > src && dst <= src + half) || (src > half && (src + half) % nodes >= dst);
-  const int step = clockwise ? 1 : -1;
+  const int fwd = ((dst - src) % nodes + nodes) % nodes;
+  const int step = (fwd <= nodes - fwd) ? 1 : -1;
   for (int at = src; at != dst;) {
     const int next = ((at + step) % nodes + nodes) % nodes;
     r.emplace_back(at, next);

@@ -2,7 +2,7 @@
 // Interconnection topologies and their routes. Hypercube: node i is linked to i ^ 2^k over
 // channel k, and a message corrects the lowest differing address bit first (e-cube routing, as
 // the iPSC DCMs do: Nugent 1988). Ring: node i is linked to i±1 mod P and a message takes the
-// shorter way round (clockwise on a tie, except from P/2 to 0: SimGrid's torus routing).
+// shorter way round (clockwise on a tie).
 #include <string>
 #include <utility>
 #include <vector>

@@ -58,7 +58,8 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   } else {
     check_node_count(cfg.topology, cfg.nodes);
     builtin_xml = platform_xml(machine_spec(cfg.machine), cfg.nodes, cfg.topology);
-    platform_label = "platforms/" + platform_file_name(cfg.machine, cfg.nodes, cfg.topology);
+    platform_label = "zcube platform --machine " + cfg.machine + " --nodes " +
+                     std::to_string(cfg.nodes) + " --topology " + topology_name(cfg.topology);
   }
 
   std::vector<std::string> args = {"zcube",

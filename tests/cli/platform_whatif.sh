@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# `zcube platform` what-ifs (issue 15) and platforms on the fly for any P (issue 14 item 2):
+# a platform written with --latency/--bandwidth/--cpu-scale runs as the same flags do on the
+# built-in machine, and 1024-node cubes and 1000-node rings are generated and routed.
+set -u
+zcube=$1
+src=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fail=0
+bad() {
+  echo "FAIL $*"
+  fail=1
+}
+whatif=(--latency 10us --bandwidth 28MBps --cpu-scale 0.25)
+"$zcube" platform --machine ipsc2 --nodes 16 "${whatif[@]}" -o "$tmp/w.xml" || bad "platform -o"
+grep -q 'speed="64Mf"' "$tmp/w.xml" || bad "--cpu-scale 0.25 is not a 64 MHz clock"
+grep -q 'bw="28MBps"' "$tmp/w.xml" || bad "--bandwidth 28MBps is not the channel bandwidth"
+run=(run --algorithm aapc-rs --scene "$src/scenes/kurc/1pot.json" --size 200x200)
+a=$("$zcube" "${run[@]}" --machine "$tmp/w.xml" 2>&1 | head -1)
+b=$("$zcube" "${run[@]}" --machine ipsc2 --nodes 16 "${whatif[@]}" 2>&1 | head -1)
+echo "file:  $a"
+echo "flags: $b"
+case "$a" in *"virtual time"*) ;; *) bad "run on the written platform: $a" ;; esac
+[ "$a" = "$b" ] || bad "the written what-if platform and the flags differ"
+# One-way times on generated platforms: iPSC/860 cube of 1024 (10 hops: 75 + 9 x 10 us) and a
+# Volvox ring of 1000 (500 hops of 50 us, store-and-forward).
+t=$("$zcube" pingpong --machine ipsc860 --nodes 1024 --to 1023 --sizes 0 | awk '!/^#/ {print $(NF - 2), $NF}')
+[ "$t" = "10 165.000" ] || bad "1024-node cube: hops and one-way us '$t', want '10 165.000'"
+t=$("$zcube" pingpong --machine volvox --topology ring --nodes 1000 --to 500 --sizes 0 |
+  awk '!/^#/ {print $(NF - 2), $NF}')
+[ "$t" = "500 25000.000" ] || bad "1000-node ring: hops and one-way us '$t', want '500 25000.000'"
+[ $fail = 0 ] && echo "ok"
+exit $fail
