@@ -17,8 +17,8 @@ whatif=(--latency 10us --bandwidth 28MBps --cpu-scale 0.25)
 grep -q 'speed="64Mf"' "$tmp/w.xml" || bad "--cpu-scale 0.25 is not a 64 MHz clock"
 grep -q 'bw="28MBps"' "$tmp/w.xml" || bad "--bandwidth 28MBps is not the channel bandwidth"
 run=(run --algorithm aapc-rs --scene "$src/scenes/kurc/1pot.json" --size 200x200)
-a=$("$zcube" "${run[@]}" --machine "$tmp/w.xml" 2>&1 | head -1)
-b=$("$zcube" "${run[@]}" --machine ipsc2 --nodes 16 "${whatif[@]}" 2>&1 | head -1)
+a=$("$zcube" "${run[@]}" --machine "$tmp/w.xml" 2>&1 | grep "virtual time")
+b=$("$zcube" "${run[@]}" --machine ipsc2 --nodes 16 "${whatif[@]}" 2>&1 | grep "virtual time")
 echo "file:  $a"
 echo "flags: $b"
 case "$a" in *"virtual time"*) ;; *) bad "run on the written platform: $a" ;; esac
