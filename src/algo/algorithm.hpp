@@ -35,11 +35,27 @@ public:
 struct AlgorithmOptions {
   int frames = 1;
   std::map<std::string, std::string>
-      values; // algorithm-specific (--vertices request, --packet 100)
-  std::string get(const std::string& key, const std::string& def) const {
+      values; // algorithm-specific (--vertices request, --packet 100), as given
+  std::map<std::string, std::string> defaults; // the others, filled in by validate_options
+  // The value given, else the declared default (validate_options has checked both).
+  std::string get(const std::string& key) const {
     auto it = values.find(key);
-    return it == values.end() ? def : it->second;
+    if (it != values.end()) return it->second;
+    auto d = defaults.find(key);
+    return d == defaults.end() ? std::string() : d->second;
   }
+};
+
+// One algorithm option (--vertices request): the single declaration zcube run's flag, its --help,
+// its default and its validation all come from.
+struct OptionSpec {
+  enum class Kind { Choice, Integer, SizeList, NodeList };
+  std::string name; // flag without dashes
+  Kind kind = Kind::Choice;
+  std::string default_value;
+  std::vector<std::string> choices; // Choice: the allowed values
+  long long min = 0, max = 0;       // Integer and each element of SizeList / NodeList
+  std::string help;
 };
 
 class NodeContext {
@@ -105,10 +121,21 @@ struct Algorithm {
   bool uses_host = false; // a host-computer actor runs `host`
   std::function<void(NodeContext&)> node;
   std::function<void(NodeContext&)> host;
-  std::vector<std::string> option_keys; // accepted AlgorithmOptions::values keys
+  std::vector<OptionSpec> options; // the algorithm-specific flags it takes
+  bool renders_frames = false;     // draws --frames K pictures of the camera path
+  bool needs_cube = false;         // runs on hypercubes only (--topology cube)
+  bool untextured = false;         // renders untextured scenes only
 };
 
 const std::vector<Algorithm>& algorithms();
+
+// Checks the options given to `a` before any simulation: each is one of its declared options
+// with an allowed value, --frames only for algorithms that render frames, the topology it needs;
+// fills in the declared defaults. UsageError naming the flag otherwise.
+void validate_options(const Algorithm& a, AlgorithmOptions& o, bool cube);
+// Every algorithm option of every algorithm, once per name (zcube run's flags), with the names of
+// the algorithms that take it.
+std::vector<std::pair<OptionSpec, std::string>> all_option_specs();
 const Algorithm& find_algorithm(const std::string& name); // UsageError when unknown
 
 } // namespace zc

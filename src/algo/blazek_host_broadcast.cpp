@@ -34,7 +34,7 @@ void host_broadcast_node(NodeContext& ctx) {
   check_scene(ctx.scene());
   Comm& c = ctx.comm();
   const int P = c.size(), r = c.rank();
-  const std::string lines = ctx.options().get("lines", "strips");
+  const std::string lines = ctx.options().get("lines");
   if (lines != "strips" && lines != "interleaved")
     throw UsageError("--lines must be strips or interleaved");
   const NodeRenderer nr(ctx.scene());

@@ -15,7 +15,7 @@ void object_forwarding_node(NodeContext& ctx) {
   check_scene(ctx.scene());
   Comm& c = ctx.comm();
   const int P = c.size(), r = c.rank();
-  const std::string mode = ctx.options().get("forward", "object");
+  const std::string mode = ctx.options().get("forward");
   if (mode != "object" && mode != "polygons")
     throw UsageError("--forward must be object or polygons");
   const NodeRenderer nr(ctx.scene());

@@ -143,10 +143,10 @@ void render_picture(NodeContext& ctx, const LocalScene& local, int frame, bool g
 }
 
 void elastic_node(NodeContext& ctx) {
-  const std::string vertices = ctx.options().get("vertices", "broadcast");
+  const std::string vertices = ctx.options().get("vertices");
   if (vertices != "broadcast" && vertices != "request")
     throw UsageError("--vertices must be broadcast or request");
-  const std::string output = ctx.options().get("output", "device");
+  const std::string output = ctx.options().get("output");
   if (output != "device" && output != "gather")
     throw UsageError("--output must be device or gather");
   const bool gather = output == "gather";
@@ -167,7 +167,21 @@ Algorithm elastic_algorithm() {
   a.name = "elastic";
   a.summary = "Charles, Lefevre, Miguet 1995: elastic load-balanced image-space z-buffer";
   a.node = elastic::elastic_node;
-  a.option_keys = {"vertices", "output"};
+  a.renders_frames = true;
+  a.options = {{"vertices",
+                OptionSpec::Kind::Choice,
+                "broadcast",
+                {"broadcast", "request"},
+                0,
+                0,
+                "vertices every node receives: all (MultiBroadcast, §4) or those it asks for (§7)"},
+               {"output",
+                OptionSpec::Kind::Choice,
+                "device",
+                {"device", "gather"},
+                0,
+                0,
+                "each node writes its slice to the output device, or node 0 gathers the picture"}};
   return a;
 }
 

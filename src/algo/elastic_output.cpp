@@ -44,7 +44,7 @@ void record_slice_table(NodeContext& ctx, const std::vector<Bytes>& stats,
       {"slices", table},
       {"triangles_rendered", sum_tris},
       {"duplicated_triangles", std::int64_t(sum_tris) - std::int64_t(scene_triangles)},
-      {"vertices", ctx.options().get("vertices", "broadcast")},
+      {"vertices", ctx.options().get("vertices")},
       {"max_row_load", *std::max_element(global_load.begin(), global_load.end())}};
   const auto [mn, mx] = std::minmax_element(loads.begin(), loads.end());
   ctx.metrics()["load_imbalance"] = total ? double(*mx - *mn) / (double(total) / ctx.nodes()) : 0.0;

@@ -99,6 +99,7 @@ Algorithm make(const char* name, const char* summary,
   a.name = name;
   a.summary = summary;
   a.node = [scheme, partition](NodeContext& ctx) { kurc_node(ctx, *scheme(partition)); };
+  a.needs_cube = true;
   return a;
 }
 

@@ -23,11 +23,11 @@ std::vector<std::size_t> parse_sizes(const std::string& s) {
 void pingpong_node(NodeContext& ctx) {
   Comm& c = ctx.comm();
   const int P = c.size();
-  const int from = std::stoi(ctx.options().get("from", "0"));
-  const std::string to_opt = ctx.options().get("to", "-1");
-  const auto sizes = parse_sizes(ctx.options().get("sizes", "0,64,100,101,1024,65536"));
+  const int from = std::stoi(ctx.options().get("from"));
+  const std::string to_opt = ctx.options().get("to");
+  const auto sizes = parse_sizes(ctx.options().get("sizes"));
   std::vector<int> targets;
-  if (to_opt == "-1") {
+  if (to_opt.empty()) {
     for (int t = 0; t < P; ++t)
       if (t != from) targets.push_back(t);
   } else {
@@ -76,7 +76,21 @@ Algorithm pingpong_algorithm() {
   a.name = "pingpong";
   a.summary = "communication benchmark: one-way time per message size and distance";
   a.node = pingpong_node;
-  a.option_keys = {"from", "to", "sizes"};
+  a.options = {{"from", OptionSpec::Kind::Integer, "0", {}, 0, 1023, "sending node"},
+               {"to",
+                OptionSpec::Kind::NodeList,
+                "",
+                {},
+                0,
+                1023,
+                "answering node(s), comma-separated (default: every other node)"},
+               {"sizes",
+                OptionSpec::Kind::SizeList,
+                "0,64,100,101,1024,65536",
+                {},
+                0,
+                1LL << 30,
+                "message sizes in bytes, comma-separated"}};
   return a;
 }
 

@@ -58,6 +58,7 @@ Algorithm sequential_algorithm() {
   a.name = "sequential";
   a.summary = "one node renders everything (the reference for speed-ups)";
   a.node = sequential_node;
+  a.renders_frames = true;
   return a;
 }
 

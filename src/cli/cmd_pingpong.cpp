@@ -16,7 +16,7 @@ static int cmd_pingpong(std::vector<std::string> args) {
   sf.nodes = 2;
   sf.add_to(app);
   int from = 0;
-  std::string to = "-1";
+  std::string to;
   std::string sizes = "0,64,100,101,1024,65536", report;
   app.add_option("--from", from, "sending node")->capture_default_str();
   app.add_option("--to", to, "answering node(s), comma-separated (default: every other node)");
@@ -27,7 +27,8 @@ static int cmd_pingpong(std::vector<std::string> args) {
   sf.apply(cfg);
   cfg.algorithm = "pingpong";
   cfg.compare_with_sequential = false;
-  cfg.options.values = {{"from", std::to_string(from)}, {"to", to}, {"sizes", sizes}};
+  cfg.options.values = {{"from", std::to_string(from)}, {"sizes", sizes}};
+  if (!to.empty()) cfg.options.values["to"] = to;
   SimResult r = run_simulation(cfg);
   if (!report.empty()) std::ofstream(report) << r.report.dump(2) << "\n";
   if (!r.ok) {

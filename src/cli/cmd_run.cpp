@@ -97,7 +97,6 @@ static int cmd_run(std::vector<std::string> args) {
   sf.add_to(app);
   std::string algorithm = "sequential", scene = default_scene_path(), size, image, depth, report;
   int frames = 1;
-  std::string vertices, packet, lines, forward, output;
   app.add_option("--algorithm", algorithm, "algorithm name (zcube run --list)")
       ->capture_default_str();
   app.add_option("--scene", scene, "scene file")->capture_default_str();
@@ -106,11 +105,15 @@ static int cmd_run(std::vector<std::string> args) {
   app.add_option("--image", image, "write the (last) picture as PNG");
   app.add_option("--depth", depth, "write its depth as EXR");
   app.add_option("--report", report, "write the report JSON");
-  app.add_option("--vertices", vertices, "elastic: broadcast or request");
-  app.add_option("--output", output, "elastic: device (each node writes its slice) or gather");
-  app.add_option("--packet", packet, "host-initiated: polygons per packet");
-  app.add_option("--lines", lines, "host-broadcast: strips or interleaved");
-  app.add_option("--forward", forward, "object-forwarding: object or polygons");
+  // The algorithms' own options, from their declarations (algorithm.hpp: OptionSpec).
+  const auto specs = run_option_specs();
+  std::vector<std::string> option_values(specs.size());
+  for (std::size_t i = 0; i < specs.size(); ++i) {
+    const auto& [s, algos] = specs[i];
+    app.add_option("--" + s.name, option_values[i],
+                   algos + ": " + s.help +
+                       (s.default_value.empty() ? "" : " [" + s.default_value + "]"));
+  }
   std::string backend = "sim";
   app.add_option("--backend", backend,
                  "sim (SimGrid, virtual time) or mpi (real processes under mpirun, measured time)")
@@ -131,11 +134,9 @@ static int cmd_run(std::vector<std::string> args) {
   auto flags = sf.flags();
   flags["algorithm"] = algorithm;
   flags["frames"] = std::to_string(frames);
-  const std::pair<const char*, const std::string*> text[] = {
-      {"size", &size},     {"vertices", &vertices}, {"output", &output},
-      {"packet", &packet}, {"lines", &lines},       {"forward", &forward}};
-  for (const auto& [k, v] : text)
-    if (!v->empty()) flags[k] = *v;
+  if (!size.empty()) flags["size"] = size;
+  for (std::size_t i = 0; i < specs.size(); ++i)
+    if (!option_values[i].empty()) flags[specs[i].first.name] = option_values[i];
   SimConfig cfg = config_from_flags(flags, scene);
   cfg.simgrid_args = sf.simgrid_args();
   check_simgrid_args(cfg.simgrid_args);

@@ -72,9 +72,8 @@ SimResult run_mpi(const SimConfig& cfg) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &world);
   const Algorithm& algo = cfg.custom ? *cfg.custom : find_algorithm(cfg.algorithm);
-  for (const auto& [k, v] : cfg.options.values)
-    if (std::find(algo.option_keys.begin(), algo.option_keys.end(), k) == algo.option_keys.end())
-      throw UsageError("--" + k + " does not apply to algorithm " + algo.name);
+  AlgorithmOptions options = cfg.options;
+  validate_options(algo, options, true);
   // The host computer of Blazek's methods is the last rank: P nodes need P + 1 processes.
   const int P = world - (algo.uses_host ? 1 : 0);
   if (P < 1)
@@ -95,7 +94,7 @@ SimResult run_mpi(const SimConfig& cfg) {
   if (cfg.timeline) stats.log = std::make_shared<EventLog>();
   std::vector<FrameImage> images;
   MpiComm comm(MPI_COMM_WORLD, P, cfg.topology, stats);
-  MpiContext ctx(comm, stats, scene, cfg.options, cfg.overrides.memory_bytes.value_or(0.0), images);
+  MpiContext ctx(comm, stats, scene, options, cfg.overrides.memory_bytes.value_or(0.0), images);
   MPI_Barrier(MPI_COMM_WORLD);
   comm.reset_clock();
   try {

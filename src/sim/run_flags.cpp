@@ -9,11 +9,21 @@
 
 namespace zc {
 
+std::vector<std::pair<OptionSpec, std::string>> run_option_specs() {
+  auto all = all_option_specs();
+  std::erase_if(all, [](const auto& p) { return p.second == "pingpong"; }); // zcube pingpong's
+  return all;
+}
+
 const std::vector<std::string>& run_flag_names() {
-  static const std::vector<std::string> f = {
-      "machine",  "nodes",   "topology",  "fidelity", "algorithm", "scene",  "size",
-      "frames",   "latency", "bandwidth", "per-hop",  "cpu-scale", "memory", "cost-scale",
-      "vertices", "output",  "packet",    "lines",    "forward"};
+  static const std::vector<std::string> f = [] {
+    std::vector<std::string> v = {"machine", "nodes",     "topology", "fidelity",  "algorithm",
+                                  "scene",   "size",      "frames",   "latency",   "bandwidth",
+                                  "per-hop", "cpu-scale", "memory",   "cost-scale"};
+    for (const auto& [s, algos] : run_option_specs())
+      v.push_back(s.name);
+    return v;
+  }();
   return f;
 }
 
@@ -69,17 +79,24 @@ SimConfig config_from_flags(const std::map<std::string, std::string>& v, const s
   if (v.count("per-hop"))
     c.overrides.per_hop_s = parse_time(v.at("per-hop"), "--per-hop", Unit::Required);
   if (v.count("cpu-scale")) c.overrides.cpu_scale = parse_positive(v.at("cpu-scale"), "cpu-scale");
-  if (v.count("memory"))
+  if (v.count("memory")) {
     c.overrides.memory_bytes = parse_bytes(v.at("memory"), "--memory", Unit::Required);
-  if (v.count("cost-scale"))
+    if (!(*c.overrides.memory_bytes > 0))
+      throw UsageError("--memory '" + v.at("memory") + "': a node needs some memory (> 0 bytes)");
+  }
+  if (v.count("cost-scale")) {
     c.overrides.cost_scale = parse_positive(v.at("cost-scale"), "cost-scale");
-  for (const char* k : {"vertices", "output", "packet", "lines", "forward"})
-    if (v.count(k)) c.options.values[k] = v.at(k);
+    // Every cost and the simulator's timing precision (1e-12 s) are multiplied by k; outside
+    // this range the scaled precision leaves normal doubles (1e-320 spun SimGrid forever).
+    if (*c.overrides.cost_scale < 1e-6 || *c.overrides.cost_scale > 1e6)
+      throw UsageError("--cost-scale '" + v.at("cost-scale") +
+                       "': outside 1e-6..1e6 (it also scales the simulator's 1e-12 s timing "
+                       "precision, which must stay a normal number above the clock's rounding)");
+  }
+  for (const auto& [s, algos] : run_option_specs())
+    if (v.count(s.name)) c.options.values[s.name] = v.at(s.name);
   // The algorithm and its options are checked here, so a bad combination fails only its point.
-  const Algorithm& a = find_algorithm(c.algorithm);
-  for (const auto& [k, val] : c.options.values)
-    if (std::find(a.option_keys.begin(), a.option_keys.end(), k) == a.option_keys.end())
-      throw UsageError("--" + k + " does not apply to algorithm " + a.name);
+  validate_options(find_algorithm(c.algorithm), c.options, xml || c.topology == Topology::Cube);
   return c;
 }
 

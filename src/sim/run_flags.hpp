@@ -9,6 +9,10 @@
 
 namespace zc {
 
+// The algorithm options zcube run takes (every algorithm's but pingpong's, which has its own
+// command), each with the algorithms that take it.
+std::vector<std::pair<OptionSpec, std::string>> run_option_specs();
+
 // Every flag name, in the order sweeps list their columns.
 const std::vector<std::string>& run_flag_names();
 

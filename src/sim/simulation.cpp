@@ -32,10 +32,8 @@ namespace sg = simgrid::s4u;
 SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   const auto wall0 = std::chrono::steady_clock::now();
   const Algorithm& algo = cfg.custom ? *cfg.custom : find_algorithm(cfg.algorithm);
-  for (const auto& [k, v] : cfg.options.values)
-    if (std::find(algo.option_keys.begin(), algo.option_keys.end(), k) == algo.option_keys.end())
-      throw UsageError("--" + k + " does not apply to algorithm " + algo.name);
-  if (cfg.options.frames < 1) throw UsageError("--frames must be at least 1");
+  AlgorithmOptions options = cfg.options;
+  validate_options(algo, options, cfg.machine.ends_with(".xml") || cfg.topology == Topology::Cube);
 
   Scene loaded;
   if (!preloaded && !cfg.scene_path.empty()) {
@@ -45,6 +43,10 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
     loaded = load_scene(cfg.scene_path, lo);
   }
   const Scene& scene = preloaded ? *preloaded : loaded;
+  if (algo.untextured && scene.textured())
+    throw InputError(scene.path, 0,
+                     algo.name + " renders untextured scenes only (Blazek's renderer "
+                                 "had no textures)");
 
   // Platform: a built-in machine is generated on the fly for any P (`zcube platform` writes the
   // same text), a path is loaded as given.
@@ -111,7 +113,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
     const CostTable cost = r < P ? pm.cost[r] : pm.cost[0];
     const double mem = r < P ? pm.memory[r] : 0.0; // the host computer is not memory-bound
     ctxs.push_back(
-        std::make_unique<SimContext>(*comms[r], stats[r], scene, cfg.options, cost, mem, images));
+        std::make_unique<SimContext>(*comms[r], stats[r], scene, options, cost, mem, images));
   }
 
   std::string failure;

@@ -50,4 +50,27 @@ for P in 8 32; do
   done
 done
 
+# Usage errors found before the simulation (exit 2, one line naming the flag), from the one
+# declaration of each algorithm option.
+usage vertices-bogus "--vertices" "$zcube" run --algorithm elastic --vertices bogus
+usage packet-5 "--packet '5'" "$zcube" run --algorithm host-initiated --packet 5 --nodes 2
+usage output-file "--output" "$zcube" run --algorithm elastic --output x.json
+usage pingpong-units "--sizes" "$zcube" pingpong --sizes 1KiB,64KiB
+usage pingpong-huge "--sizes" "$zcube" pingpong --sizes 99999999999999999999
+usage option-elsewhere "does not apply" "$zcube" run --algorithm sequential --lines strips
+for a in zbuf-exc pair-rs aapc-hbp; do
+  usage "kurc-ring-$a" "hypercube" "$zcube" run --algorithm "$a" --topology ring --nodes 4
+done
+for a in pair-rs host-broadcast object-forwarding zbuf-exc; do
+  usage "frames-$a" "--frames 2" "$zcube" run --algorithm "$a" --frames 2 --nodes 2
+done
+usage blazek-textured "untextured" "$zcube" run --algorithm node-initiated \
+  --scene "$src/scenes/spot.json" --nodes 2 --size 32x32
+usage memory-zero "--memory" "$zcube" run --memory 0 --size 16x16
+usage cost-scale-denormal "--cost-scale" "$zcube" run --cost-scale 1e-320 --size 16x16
+usage cost-scale-tiny "--cost-scale" "$zcube" run --cost-scale 1e-300 --size 16x16
+ok frames-elastic "identical to the sequential renderer's: true" "$zcube" run --algorithm elastic \
+  --frames 2 --nodes 4 --size 32x32
+ok pingpong-to "one_way_us" "$zcube" pingpong --nodes 4 --to 1,3
+
 exit $fail
