@@ -1,6 +1,7 @@
 // The JSON scene format (documented in scenes/README.md): image, background, ambient, lights,
 // camera, culling, texture filter, and objects (meshes, Newell Bezier patches, Blazek's primitives)
 // with transforms, colours and seeded replication.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -211,6 +212,17 @@ void load_json_scene(Scene& scene, const std::string& path) {
     if (auto p = why.find(": "); p != std::string::npos && why.rfind("parse error", 0) == 0)
       why = "JSON " + why.substr(p + 2);
     throw InputError(path, line, why);
+  } catch (const json::out_of_range& e) {
+    // "number overflow parsing '1e400'": no byte offset, so the line is where the number is.
+    std::string why = e.what(), num;
+    if (auto p = why.find("] "); p != std::string::npos) why = why.substr(p + 2);
+    if (auto a = why.find('\''), b = why.rfind('\''); a != std::string::npos && b > a)
+      num = why.substr(a + 1, b - a - 1);
+    const std::size_t at = num.empty() ? std::string::npos : src.find(num);
+    const int line = at == std::string::npos
+                         ? 0
+                         : 1 + int(std::count(src.begin(), src.begin() + long(at), '\n'));
+    throw InputError(path, line, "JSON " + why + " (beyond the range of a double)");
   }
   if (!j.is_object()) cx.fail("scene", "expected a JSON object");
   check_keys(cx, j, "scene",

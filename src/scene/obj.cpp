@@ -1,9 +1,11 @@
 // Wavefront OBJ + MTL through tinyobjloader (Malerich 2017: models come as .obj with a .mtl that
 // holds the textures). tinyobjloader is lenient, so the text is checked first, line by line, and
 // every fault becomes an InputError with its line number.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <sstream>
 #include <unordered_map>
 
 #include <tiny_obj_loader.h>
@@ -135,6 +137,8 @@ ObjCheck check_obj(const std::string& path, const std::string& s) {
       if (tok.size() > 256) throw InputError(path, l.number, "a face has more than 255 vertices");
       for (std::size_t q = 1; q < tok.size(); ++q) {
         std::string_view ref = tok[q];
+        if (ref.back() == '/' || std::count(ref.begin(), ref.end(), '/') > 2)
+          throw InputError(path, l.number, "bad face vertex '" + std::string(ref) + "'");
         for (int part = 0; part < 3 && !ref.empty(); ++part) {
           std::size_t slash = ref.find('/');
           std::string_view num = ref.substr(0, slash);
@@ -174,7 +178,8 @@ void append_obj(Scene& scene, const std::string& path, const ObjectTransform& xf
                 std::uint32_t default_material, bool flip_winding) {
   std::error_code ec;
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, 0, "mesh file not found");
-  const std::string src = text::read_file(path);
+  std::string src = text::read_file(path);
+  if (src.starts_with("\xEF\xBB\xBF")) src.erase(0, 3); // a UTF-8 byte-order mark
   ObjCheck check = check_obj(path, src);
 
   tinyobj::attrib_t attrib;
@@ -182,8 +187,11 @@ void append_obj(Scene& scene, const std::string& path, const ObjectTransform& xf
   std::vector<tinyobj::material_t> mats;
   std::string warn, err;
   const std::string dir = text::directory_of(path);
-  if (!tinyobj::LoadObj(&attrib, &shapes, &mats, &warn, &err, path.c_str(),
-                        dir.empty() ? nullptr : dir.c_str(), /*triangulate=*/false))
+  // From the text already checked (without its byte-order mark), not from the file again.
+  std::istringstream in(src);
+  tinyobj::MaterialFileReader materials(dir.empty() ? std::string() : dir + "/");
+  if (!tinyobj::LoadObj(&attrib, &shapes, &mats, &warn, &err, &in, &materials,
+                        /*triangulate=*/false))
     throw InputError(path, 0, "cannot parse OBJ: " + std::string(text::trim(err)));
   for (float f : attrib.vertices)
     if (!std::isfinite(f)) throw InputError(path, 0, "non-finite vertex coordinate");

@@ -20,7 +20,14 @@ private:
   static std::string format(const std::string& file, int line, const std::string& reason) {
     std::string s = file.empty() ? std::string("<input>") : file;
     if (line > 0) s.append(":").append(std::to_string(line));
-    s.append(": ").append(reason);
+    s.append(": ");
+    // A reason quotes the input; bytes of a binary file are shown as \xNN, not echoed.
+    static const char* hex = "0123456789abcdef";
+    for (unsigned char c : reason)
+      if (c < 0x20 || c >= 0x7f)
+        s.append("\\x").push_back(hex[c >> 4]), s.push_back(hex[c & 15]);
+      else
+        s.push_back(char(c));
     return s;
   }
   std::string file_;
