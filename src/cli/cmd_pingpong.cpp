@@ -6,6 +6,7 @@
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
 #include "cli/sim_options.hpp"
+#include "util/output_file.hpp"
 
 namespace zc::cli {
 
@@ -23,6 +24,7 @@ static int cmd_pingpong(std::vector<std::string> args) {
   app.add_option("--sizes", sizes, "message sizes in bytes")->capture_default_str();
   app.add_option("--report", report, "write the report JSON");
   if (int rc = parse(app, args); rc >= 0) return rc;
+  check_output_path(report, "--report");
   SimConfig cfg;
   sf.apply(cfg);
   cfg.algorithm = "pingpong";
@@ -30,7 +32,7 @@ static int cmd_pingpong(std::vector<std::string> args) {
   cfg.options.values = {{"from", std::to_string(from)}, {"sizes", sizes}};
   if (!to.empty()) cfg.options.values["to"] = to;
   SimResult r = run_simulation(cfg);
-  if (!report.empty()) std::ofstream(report) << r.report.dump(2) << "\n";
+  if (!report.empty()) write_text_file(report, r.report.dump(2) + "\n");
   if (!r.ok) {
     std::cerr << "zcube: error: " << r.error << "\n";
     return 1;

@@ -12,6 +12,7 @@
 #include "raster/renderer.hpp"
 #include "scene/load.hpp"
 #include "util/image_size.hpp"
+#include "util/output_file.hpp"
 
 namespace zc::cli {
 
@@ -60,7 +61,7 @@ static int cmd_render(std::vector<std::string> args) {
     j["counters"] = r.counters;
     j["image"] = {{"path", image}, {"sha256", sha}};
     j["host"] = {{"wall_time_s", r.wall_time_s}};
-    std::ofstream(report) << j.dump(2) << "\n";
+    write_text_file(report, j.dump(2) + "\n");
   }
   std::cout << "image: " << image << "  (" << scene.width << "x" << scene.height << ", "
             << scene.triangles.size() << " triangles, " << r.counters.pixels_generated

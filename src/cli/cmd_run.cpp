@@ -16,6 +16,7 @@
 #include "sim/simgrid_args.hpp"
 #include "trace/trace_file.hpp"
 #include "util/error.hpp"
+#include "util/output_file.hpp"
 #ifdef ZCUBE_HAVE_MPI
 #include "mpi/mpi_run.hpp"
 #include "mpi/mpi_session.hpp"
@@ -53,7 +54,7 @@ struct TimelineOutputs {
 // Writes the report and pictures and prints the summary (rank 0 only under MPI).
 static int finish(const SimResult& r, const std::string& report, const std::string& image,
                   const std::string& depth, const TimelineOutputs& tl) {
-  if (!report.empty()) std::ofstream(report) << r.report.dump(2) << "\n";
+  if (!report.empty()) write_text_file(report, r.report.dump(2) + "\n");
   if (!tl.trace.empty()) write_trace(r.report, tl.trace);
   if (!tl.gantt.empty() && !draw_gantt(r.report, tl.gantt, source_root())) {
     std::cerr << "zcube: error: --gantt " << tl.gantt << ": scripts/plot_gantt.py failed\n";
@@ -131,6 +132,11 @@ static int cmd_run(std::vector<std::string> args) {
       std::cout << a.name << "  " << a.summary << "\n";
     return 0;
   }
+  check_output_path(report, "--report"); // before the simulation, not after it
+  check_output_path(image, "--image");
+  check_output_path(depth, "--depth");
+  check_output_path(tl.trace, "--trace");
+  check_output_path(tl.gantt, "--gantt");
   auto flags = sf.flags();
   flags["algorithm"] = algorithm;
   flags["frames"] = std::to_string(frames);

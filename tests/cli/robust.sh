@@ -73,4 +73,15 @@ ok frames-elastic "identical to the sequential renderer's: true" "$zcube" run --
   --frames 2 --nodes 4 --size 32x32
 ok pingpong-to "one_way_us" "$zcube" pingpong --nodes 4 --to 1,3
 
+# Unwritable outputs: refused before the simulation, or failing the run when the write fails.
+usage report-missing-dir "--report" "$zcube" run --size 16x16 --report "$tmp/nope/r.json"
+usage report-is-dir "--report" "$zcube" run --size 16x16 --report "$tmp"
+usage image-missing-dir "--image" "$zcube" run --size 16x16 --image "$tmp/nope/x.png"
+if [ -w /dev/full ]; then
+  failed report-dev-full "/dev/full" "$zcube" run --size 16x16 --report /dev/full
+fi
+# A UTF-8 byte-order mark before the first OBJ line.
+ok obj-bom "image:" "$zcube" render --scene "$src/tests/data/scene/bom.obj" --size 16x16 \
+  --image "$tmp/bom.png"
+
 exit $fail
