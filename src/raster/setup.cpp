@@ -118,13 +118,24 @@ void emit(const SnapVertex* s, const SetupInput& in, bool textured, int width, i
   out.tris.push_back(t);
 }
 
+// A clipped vertex lies within the guard band, so |X|, |Y| <= (2 kGuardBand + 1) * side * kSub <
+// 2^27 and the edge products stay below 2^55: exact in 64 bits. A vertex outside it (or NaN) comes
+// from clip-space values that overflowed; its triangle cannot be set up exactly and is dropped.
+bool representable(const SnapVertex& s, int width, int height) {
+  const double lim = (2 * kGuardBand + 2) * double(std::max(width, height)) * double(kSub);
+  return std::fabs(double(s.X)) <= lim && std::fabs(double(s.Y)) <= lim && std::isfinite(s.z) &&
+         std::isfinite(s.invw);
+}
+
 SnapVertex snap(const ClipVertex& cv, int width, int height) {
   const double invw = 1.0 / cv.a[3];
   const double sx = (cv.a[0] * invw * 0.5 + 0.5) * width;
   const double sy = (0.5 - cv.a[1] * invw * 0.5) * height;
   SnapVertex s;
-  s.X = round_half_away(sx * kSub);
-  s.Y = round_half_away(sy * kSub);
+  // NaN or beyond 2^62 (overflowed clip-space values): a sentinel representable() rejects.
+  const double big = 4.0e18;
+  s.X = std::fabs(sx * kSub) < big ? round_half_away(sx * kSub) : std::int64_t(big);
+  s.Y = std::fabs(sy * kSub) < big ? round_half_away(sy * kSub) : std::int64_t(big);
   s.z = cv.a[2] * invw * 0.5 + 0.5;
   s.invw = invw;
   for (int i = 0; i < 5; ++i)
@@ -207,8 +218,13 @@ void setup_triangle(const SetupInput& in, int width, int height, bool cull_back,
   if (cr == kClipCut) ++c.triangles_clipped;
 
   SnapVertex s[kClipMaxVerts];
-  for (int i = 0; i < poly.n; ++i)
+  for (int i = 0; i < poly.n; ++i) {
     s[i] = snap(poly.v[i], width, height);
+    if (!representable(s[i], width, height)) {
+      ++c.triangles_culled; // its clip-space numbers overflowed (coordinates near FLT_MAX)
+      return;
+    }
+  }
 
   if (cull_back) {
     // Facing is decided on the whole (clipped) polygon: y points down on screen, so a
