@@ -276,7 +276,7 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCase{"bad_color.sdl", 2, "unknown colour 'octarine'"},
                       BadCase{"truncated.sdl", 2, "'scale' needs a value"},
                       BadCase{"bezier_index.teaset", 2, "control-point index 99 out of range"},
-                      BadCase{"bezier_truncated.teaset", 5, "truncated file"}),
+                      BadCase{"bezier_truncated.teaset", 3, "truncated file"}),
     [](const ::testing::TestParamInfo<BadCase>& i) {
       std::string n = i.param.file;
       for (char& ch : n)
