@@ -176,9 +176,7 @@ usage_error calibrate-keeps-fit "--overwrite" "$zcube" calibrate --out "$tmp/cal
 # --- finding 7: the documentation is self-contained ------------------------------------------------
 # A user's clone has no ../shared: no user-facing file may point there (the papers are cited by
 # reference, the machine figures are in docs/machines.md).
-# (The platform generator's comment and platforms/ are being rewritten with the platform files.)
-links=$(grep -rln '\.\./shared' README.md docs src scenes/*.md results/*/README.md 2>/dev/null |
-  grep -v "src/machine/platform_xml.cpp")
+links=$(grep -rln '\.\./shared' README.md docs src scenes platforms results/*/README.md 2>/dev/null)
 expect docs-no-outside-links $([ -z "$links" ]; echo $?) "$links"
 for f in docs/index.md docs/user-guide.md docs/adding-a-machine.md docs/adding-an-algorithm.md; do
   test -s "$f"
@@ -186,5 +184,7 @@ for f in docs/index.md docs/user-guide.md docs/adding-a-machine.md docs/adding-a
 done
 ! grep -q "about an hour" src/cli/cmd_reproduce.cpp
 expect reproduce-full-duration-consistent $?
+! grep -qi "uncalibrated placeholder" platforms/README.md
+expect platforms-readme-not-stale $?
 
 exit $fail
