@@ -5,7 +5,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 PKGS=(build-essential cmake ccache pkg-config libsimgrid-dev libglm-dev libopenimageio-dev
       nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
-      libtinyobjloader-dev libssl-dev python3-matplotlib pajeng
+      libtinyobjloader-dev libssl-dev python3-matplotlib pajeng clang libclang-rt-14-dev
       libopenmpi-dev openmpi-bin
       libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri)
 missing=()
