@@ -17,13 +17,6 @@ void Bounds::add(const glm::dvec3& p) {
   }
 }
 
-Bounds scene_bounds(const Scene& s) {
-  Bounds b;
-  for (const auto& v : s.vertices)
-    b.add(glm::dvec3(v.position));
-  return b;
-}
-
 void resolve_clip_planes(const Camera& cam, const Bounds& b, double& znear, double& zfar) {
   znear = cam.znear;
   zfar = cam.zfar;

@@ -3,9 +3,17 @@
 // clip-space depth in [-w, w]).
 #include <glm/glm.hpp>
 
-#include "scene/scene.hpp"
-
 namespace zc {
+
+// A viewer: position, aim, up direction and lens.
+struct Camera {
+  glm::dvec3 eye{0, 0, 5};
+  glm::dvec3 target{0, 0, 0};
+  glm::dvec3 up{0, 1, 0};
+  double fovy_deg = 45.0; // vertical field of view
+  double znear = 0;       // 0 = derived from the scene's bounds
+  double zfar = 0;        // 0 = derived from the scene's bounds
+};
 
 struct Bounds {
   glm::dvec3 lo{0}, hi{0};
@@ -14,8 +22,6 @@ struct Bounds {
   glm::dvec3 center() const { return (lo + hi) * 0.5; }
   double radius() const { return empty ? 0.0 : glm::length(hi - lo) * 0.5; }
 };
-
-Bounds scene_bounds(const Scene& s);
 
 // Near/far planes: the camera's if set, else fitted around the scene's bounding sphere.
 void resolve_clip_planes(const Camera& cam, const Bounds& b, double& znear, double& zfar);

@@ -10,6 +10,7 @@
 #include "scene/loaders.hpp"
 #include "scene/text.hpp"
 #include "util/error.hpp"
+#include "util/image_size.hpp"
 
 namespace zc {
 

@@ -19,7 +19,4 @@ struct LoadOptions {
 
 Scene load_scene(const std::string& path, const LoadOptions& opt = {});
 
-// Largest image side accepted (each side); a bigger request is an input error, not an allocation.
-constexpr int kMaxImageSide = 16384;
-
 } // namespace zc

@@ -9,16 +9,9 @@
 
 #include <glm/glm.hpp>
 
-namespace zc {
+#include "geometry/camera.hpp"
 
-struct Camera {
-  glm::dvec3 eye{0, 0, 5};
-  glm::dvec3 target{0, 0, 0};
-  glm::dvec3 up{0, 1, 0};
-  double fovy_deg = 45.0; // vertical field of view
-  double znear = 0;       // 0 = derived from the scene's bounds
-  double zfar = 0;        // 0 = derived from the scene's bounds
-};
+namespace zc {
 
 struct DirectionalLight {
   glm::vec3 direction{-1, -1, -1}; // direction the light travels (towards the scene)
@@ -85,5 +78,8 @@ struct Scene {
 
   bool textured() const { return !textures.empty() && !uvs.empty(); }
 };
+
+// The bounding box of the scene's vertices.
+Bounds scene_bounds(const Scene& s);
 
 } // namespace zc

@@ -25,6 +25,7 @@
 #include "scene/prng.hpp"
 #include "scene/text.hpp"
 #include "util/error.hpp"
+#include "util/image_size.hpp"
 
 #include <filesystem>
 #include <numbers>

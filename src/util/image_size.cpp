@@ -2,7 +2,6 @@
 
 #include <cstdlib>
 
-#include "scene/load.hpp"
 #include "util/error.hpp"
 
 namespace zc {

@@ -4,6 +4,9 @@
 
 namespace zc {
 
+// Largest image side accepted (each side); a bigger request is an input error, not an allocation.
+constexpr int kMaxImageSide = 16384;
+
 struct ImageSize {
   int width = 0, height = 0;
 };

@@ -11,6 +11,7 @@
 #include "scene/primitives.hpp"
 #include "scene/tessellate.hpp"
 #include "util/error.hpp"
+#include "util/image_size.hpp"
 
 namespace {
 
