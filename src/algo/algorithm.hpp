@@ -13,9 +13,9 @@
 #include <nlohmann/json.hpp>
 
 #include "comm/comm.hpp"
-#include "raster/counters.hpp"
 #include "raster/framebuffer.hpp"
 #include "scene/scene.hpp"
+#include "util/counters.hpp"
 
 namespace zc {
 

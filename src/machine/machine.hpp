@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "machine/topology.hpp"
-#include "raster/counters.hpp"
+#include "util/counters.hpp"
 
 namespace zc {
 

@@ -15,9 +15,9 @@
 #include "machine/platform_xml.hpp"
 #include "mpi/mpi_session.hpp"
 #include "raster/renderer.hpp"
-#include "repro/nnls.hpp"
 #include "scene/load.hpp"
 #include "util/error.hpp"
+#include "util/nnls.hpp"
 
 namespace zc {
 

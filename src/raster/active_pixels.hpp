@@ -10,10 +10,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "raster/counters.hpp"
 #include "raster/framebuffer.hpp"
 #include "raster/setup.hpp"
 #include "raster/shade.hpp"
+#include "util/counters.hpp"
 
 namespace zc {
 

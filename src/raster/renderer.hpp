@@ -4,12 +4,12 @@
 #include <functional>
 #include <vector>
 
-#include "raster/counters.hpp"
 #include "raster/framebuffer.hpp"
 #include "raster/setup.hpp"
 #include "raster/shade.hpp"
 #include "raster/view.hpp"
 #include "scene/scene.hpp"
+#include "util/counters.hpp"
 
 namespace zc {
 

@@ -8,8 +8,8 @@
 
 #include <glm/glm.hpp>
 
-#include "raster/counters.hpp"
 #include "raster/view.hpp"
+#include "util/counters.hpp"
 
 namespace zc {
 

@@ -6,9 +6,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "raster/counters.hpp"
 #include "raster/setup.hpp"
 #include "scene/scene.hpp"
+#include "util/counters.hpp"
 
 namespace zc {
 

@@ -1,10 +1,10 @@
 #pragma once
 // The scanline z-buffer (Charles et al. §2): every screen triangle is scanned row by row over the
 // rows of the frame buffer, and each generated pixel is kept if it is in front of the stored one.
-#include "raster/counters.hpp"
 #include "raster/framebuffer.hpp"
 #include "raster/setup.hpp"
 #include "raster/shade.hpp"
+#include "util/counters.hpp"
 
 namespace zc {
 

@@ -12,9 +12,9 @@
 #include "machine/cpu_model.hpp"
 #include "machine/machine.hpp"
 #include "machine/platform_xml.hpp"
-#include "repro/nnls.hpp"
 #include "repro/paper_figures.hpp"
 #include "sim/batch.hpp"
+#include "util/nnls.hpp"
 
 namespace zc {
 

@@ -8,11 +8,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "raster/counters.hpp"
 #include "raster/framebuffer.hpp"
 #include "scene/scene.hpp"
 #include "sim/event_log.hpp"
 #include "sim/simulation.hpp"
+#include "util/counters.hpp"
 
 namespace zc {
 

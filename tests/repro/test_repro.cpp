@@ -11,13 +11,13 @@
 
 #include "machine/cpu_model.hpp"
 #include "machine/machine.hpp"
-#include "repro/nnls.hpp"
 #include "repro/paper_figures.hpp"
 #include "repro/regress.hpp"
 #include "repro/reproduce.hpp"
 #include "repro/sweep.hpp"
 #include "sim/batch.hpp"
 #include "util/error.hpp"
+#include "util/nnls.hpp"
 
 using namespace zc;
 

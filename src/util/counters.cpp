@@ -1,4 +1,4 @@
-#include "raster/counters.hpp"
+#include "util/counters.hpp"
 
 #include <nlohmann/json.hpp>
 

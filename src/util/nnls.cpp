@@ -1,4 +1,4 @@
-#include "repro/nnls.hpp"
+#include "util/nnls.hpp"
 
 #include <cmath>
 #include <limits>

@@ -1,6 +1,7 @@
 #pragma once
-// Least squares under bounds for the calibration. Non-negative least squares, min |A x - b|^2 subject to x >= 0 (Lawson & Hanson 1974, ch. 23),
-// for the calibration's small dense systems (tens of rows, a handful of unknowns).
+// Least squares under bounds for the calibration. Non-negative least squares, min |A x - b|^2
+// subject to x >= 0 (Lawson & Hanson 1974, ch. 23), for the calibration's small dense systems (tens
+// of rows, a handful of unknowns).
 #include <vector>
 
 namespace zc {
