@@ -6,6 +6,7 @@
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
 #include "cli/sim_options.hpp"
+#include "repro/simulate.hpp"
 #include "util/output_file.hpp"
 
 namespace zc::cli {
@@ -32,6 +33,7 @@ static int cmd_pingpong(std::vector<std::string> args) {
   cfg.options.values = {{"from", std::to_string(from)}, {"sizes", sizes}};
   if (!to.empty()) cfg.options.values["to"] = to;
   SimResult r = run_simulation(cfg);
+  attach_paper_figures(r.report);
   if (!report.empty()) write_text_file(report, r.report.dump(2) + "\n");
   if (!r.ok) {
     std::cerr << "zcube: error: " << r.error << "\n";

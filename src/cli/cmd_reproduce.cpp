@@ -3,6 +3,7 @@
 #include "cli/parse.hpp"
 #include "cli/paths.hpp"
 #include "repro/reproduce.hpp"
+#include "repro/simulate.hpp"
 #include "sim/batch.hpp"
 #ifdef ZCUBE_HAVE_MPI
 #include <optional>
@@ -54,7 +55,10 @@ static int cmd_reproduce(std::vector<std::string> args) {
   if (launched_by_mpirun()) {
     mpi.emplace();
     if (!jobs_opt->count()) o.jobs = 1;
-    o.runner = run_batch_sharded;
+    o.runner = [](const std::vector<SimConfig>& cfgs, int jobs,
+                  const std::function<void(const BatchProgress&)>& progress) {
+      return run_batch_sharded(cfgs, jobs, simulate_point, progress);
+    };
     o.write = mpi->rank() == 0;
   }
 #endif

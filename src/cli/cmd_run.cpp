@@ -11,6 +11,7 @@
 #include "raster/image_io.hpp"
 #include "repro/gantt_chart.hpp"
 #include "repro/paper_figures.hpp"
+#include "repro/simulate.hpp"
 #include "scene/load.hpp"
 #include "sim/run_flags.hpp"
 #include "sim/simgrid_args.hpp"
@@ -175,6 +176,7 @@ static int cmd_run(std::vector<std::string> args) {
     if (sr.value("status", "") == "ok") seq_s = sr["virtual_time_s"].get<double>();
   }
   SimResult r = run_simulation(cfg);
+  attach_paper_figures(r.report);
   if (r.ok && seq_s) r.report["paper"] = paper_figures_for(r.report, seq_s);
   return finish(r, report, image, depth, tl);
 }

@@ -10,6 +10,7 @@
 #include "repro/plot_script.hpp"
 #include "repro/progress.hpp"
 #include "repro/reproduce.hpp"
+#include "repro/simulate.hpp"
 #include "repro/sweep.hpp"
 #include "sim/batch.hpp"
 #include "util/error.hpp"
@@ -116,11 +117,11 @@ static int cmd_sweep(std::vector<std::string> args) {
   const auto reports = run_points(points, [&](const std::vector<SimConfig>& cfgs) {
 #ifdef ZCUBE_HAVE_MPI
     if (mpi)
-      return run_batch_sharded(cfgs, jobs,
+      return run_batch_sharded(cfgs, jobs, simulate_point,
                                root ? progress_printer("sweep (rank 0's share)")
                                     : std::function<void(const BatchProgress&)>{});
 #endif
-    return run_batch(cfgs, jobs, progress_printer("sweep"));
+    return simulate_batch(cfgs, jobs, progress_printer("sweep"));
   });
   if (!root) return 0;
   nlohmann::json rows = sweep_rows(axes, points, reports);

@@ -7,7 +7,7 @@
 namespace zc {
 
 std::vector<nlohmann::json>
-run_batch_sharded(const std::vector<SimConfig>& points, int jobs,
+run_batch_sharded(const std::vector<SimConfig>& points, int jobs, const PointRunner& run_point,
                   const std::function<void(const BatchProgress&)>& progress) {
   int rank = 0, size = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -18,7 +18,7 @@ run_batch_sharded(const std::vector<SimConfig>& points, int jobs,
     mine.push_back(points[i]);
     index.push_back(i);
   }
-  const auto reps = run_batch(mine, jobs, progress);
+  const auto reps = run_batch(mine, jobs, run_point, progress);
   nlohmann::json out = nlohmann::json::array();
   for (std::size_t k = 0; k < reps.size(); ++k)
     out.push_back({{"index", index[k]}, {"report", reps[k]}});

@@ -1,4 +1,5 @@
 #include "repro/calibrate.hpp"
+#include "repro/simulate.hpp"
 
 #include <unistd.h>
 
@@ -44,7 +45,7 @@ private:
 
 std::vector<nlohmann::json> run_all(const std::vector<SimConfig>& cfgs,
                                     const CalibrationOptions& o) {
-  auto reps = run_batch(cfgs, o.jobs);
+  auto reps = simulate_batch(cfgs, o.jobs);
   for (std::size_t i = 0; i < reps.size(); ++i)
     if (reps[i].value("status", "") != "ok")
       throw std::runtime_error("calibration run " + cfgs[i].algorithm + " on " +

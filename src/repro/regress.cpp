@@ -1,4 +1,5 @@
 #include "repro/regress.hpp"
+#include "repro/simulate.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -82,8 +83,8 @@ std::map<std::string, nlohmann::json> run_regress(const std::vector<RegressRun>&
       throw UsageError(msg);
     }
   }
-  const auto reps =
-      run_points(points, [jobs](const std::vector<SimConfig>& c) { return run_batch(c, jobs); });
+  const auto reps = run_points(
+      points, [jobs](const std::vector<SimConfig>& c) { return simulate_batch(c, jobs); });
   std::map<std::string, nlohmann::json> out;
   for (std::size_t i = 0; i < runs.size(); ++i)
     out[runs[i].name] = reduce_report(reps[i]);

@@ -1,4 +1,5 @@
 #include "repro/reproduce.hpp"
+#include "repro/simulate.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -155,7 +156,8 @@ int reproduce(const ReproduceOptions& o) {
     std::cerr << "reproduce: " << cfgs.size() << " simulations, " << o.jobs << " at a time\n";
   const auto progress = o.verbose && o.write ? progress_printer("reproduce")
                                              : std::function<void(const BatchProgress&)>{};
-  const auto reps = o.runner ? o.runner(cfgs, o.jobs, progress) : run_batch(cfgs, o.jobs, progress);
+  const auto reps =
+      o.runner ? o.runner(cfgs, o.jobs, progress) : simulate_batch(cfgs, o.jobs, progress);
   if (!o.write) return 0;
 
   int status = 0;

@@ -25,10 +25,10 @@ struct Child {
 
 // In the child: run, write the report (or the error) to fd, exit without running the parent's
 // atexit handlers or flushing its buffers twice.
-[[noreturn]] void child_main(const SimConfig& cfg, int fd) {
+[[noreturn]] void child_main(const PointRunner& run_point, const SimConfig& cfg, int fd) {
   std::string out;
   try {
-    out = run_simulation(cfg).report.dump();
+    out = run_point(cfg).dump();
   } catch (const std::exception& ex) {
     out = nlohmann::json{{"status", "error"}, {"error", ex.what()}}.dump();
   }
@@ -108,6 +108,7 @@ int default_jobs() {
 }
 
 std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int jobs,
+                                      const PointRunner& run_point,
                                       const std::function<void(const BatchProgress&)>& progress) {
   std::vector<nlohmann::json> reports(points.size());
   std::vector<Child> running;
@@ -131,7 +132,7 @@ std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int 
         close(fds[0]);
         for (const Child& c : running)
           close(c.fd);
-        child_main(points[next], fds[1]);
+        child_main(run_point, points[next], fds[1]);
       }
       close(fds[1]);
       running.push_back({pid, fds[0], next, {}});

@@ -17,7 +17,6 @@
 #include "machine/units.hpp"
 #include "raster/image_io.hpp"
 #include "raster/renderer.hpp"
-#include "repro/paper_figures.hpp"
 #include "scene/load.hpp"
 #include "sim/batch.hpp"
 #include "sim/platform_load.hpp"
@@ -172,8 +171,6 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
       {"node_memory_bytes", pm.memory.empty() ? 0.0 : pm.memory[0]}};
 
   add_image_section(j, images, scene, cfg, res.ok, res.images);
-  // The seeds' figures this run corresponds to, with the relative error (repro/paper_figures).
-  if (auto paper = paper_figures_for(j); !paper.empty()) j["paper"] = paper;
   j["host"] = {{"wall_time_s",
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count()},
                {"peak_rss_bytes", peak_rss_bytes()}};
@@ -181,7 +178,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
 }
 
 nlohmann::json run_simulation_isolated(const SimConfig& cfg) {
-  return run_batch({cfg}, 1).front();
+  return run_batch({cfg}, 1, [](const SimConfig& c) { return run_simulation(c).report; }).front();
 }
 
 } // namespace zc

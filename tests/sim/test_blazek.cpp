@@ -53,6 +53,8 @@ TEST(Blazek, EveryMethodOnEveryCubeGivesTheSequentialImage) {
 TEST(Blazek, PacketSizeChangesTheTimeNotTheImage) {
   auto a = blazek("host-initiated", "scenes/blazek/spheres_16.json", 8, 128, {{"packet", "10"}});
   auto b = blazek("host-initiated", "scenes/blazek/spheres_16.json", 8, 128, {{"packet", "1000"}});
+  ASSERT_EQ(a["status"], "ok") << a.dump();
+  ASSERT_EQ(b["status"], "ok") << b.dump();
   EXPECT_EQ(a["image"]["sha256"], b["image"]["sha256"]);
   EXPECT_NE(a["virtual_time_s"], b["virtual_time_s"]);
   EXPECT_GT(a["communication"]["messages"].get<int>(), b["communication"]["messages"].get<int>());
@@ -72,6 +74,8 @@ TEST(Blazek, InterleavedLinesBalanceAClusteredSceneBetterThanStrips) {
   auto s = blazek("host-broadcast", "scenes/blazek/clustered.json", 8, 128, {{"lines", "strips"}});
   auto i =
       blazek("host-broadcast", "scenes/blazek/clustered.json", 8, 128, {{"lines", "interleaved"}});
+  ASSERT_EQ(s["status"], "ok") << s.dump();
+  ASSERT_EQ(i["status"], "ok") << i.dump();
   EXPECT_EQ(s["image"]["sha256"], i["image"]["sha256"]);
   EXPECT_LT(busy_spread(i), busy_spread(s) / 2);
 }

@@ -1,0 +1,23 @@
+#pragma once
+// The runs zcube makes: a simulation's report with the seeds' figures it corresponds to attached
+// (repro/paper_figures), so that the simulator below knows nothing of the papers.
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "sim/batch.hpp"
+
+namespace zc {
+
+// Adds "paper" (the matching figures and the relative errors) when the report matches any.
+void attach_paper_figures(nlohmann::json& report);
+
+// One simulation's report, paper figures attached: the point runner of zcube's batches.
+nlohmann::json simulate_point(const SimConfig& cfg);
+
+// run_batch with simulate_point.
+std::vector<nlohmann::json>
+simulate_batch(const std::vector<SimConfig>& points, int jobs,
+               const std::function<void(const BatchProgress&)>& progress = {});
+
+} // namespace zc
