@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/simulation.hpp"
+#include "sim/config.hpp"
 
 namespace zc {
 

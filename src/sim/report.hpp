@@ -10,8 +10,8 @@
 
 #include "raster/framebuffer.hpp"
 #include "scene/scene.hpp"
+#include "sim/config.hpp"
 #include "sim/event_log.hpp"
-#include "sim/simulation.hpp"
 #include "util/counters.hpp"
 
 namespace zc {

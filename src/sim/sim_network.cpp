@@ -8,24 +8,6 @@ namespace zc {
 
 namespace sg = simgrid::s4u;
 
-Fidelity parse_fidelity(const std::string& s) {
-  if (s == "analytic") return Fidelity::Analytic;
-  if (s == "flow") return Fidelity::Flow;
-  if (s == "circuit") return Fidelity::Circuit;
-  throw UsageError("--fidelity '" + s + "': expected analytic, flow or circuit");
-}
-
-const char* fidelity_name(Fidelity f) {
-  switch (f) {
-  case Fidelity::Analytic:
-    return "analytic";
-  case Fidelity::Flow:
-    return "flow";
-  default:
-    return "circuit";
-  }
-}
-
 SimNetwork::SimNetwork(const NetworkParams& params, Topology topo, int nodes, Fidelity fidelity,
                        std::vector<sg::Host*> hosts)
     : p_(params), topo_(topo), nodes_(nodes), fid_(fidelity), hosts_(std::move(hosts)) {}

@@ -10,45 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "algo/algorithm.hpp"
-#include "machine/topology.hpp"
-#include "raster/framebuffer.hpp"
-#include "sim/fidelity.hpp"
+#include "sim/config.hpp"
 
 namespace zc {
-
-struct Overrides {
-  std::optional<double> latency_s;     // start-up, short and long messages
-  std::optional<double> bandwidth_Bps; // channel bandwidth (per-byte cost = 1/bandwidth)
-  std::optional<double> per_hop_s;
-  std::optional<double> cpu_scale;    // multiplies every CPU cost
-  std::optional<double> memory_bytes; // node memory
-  std::optional<double> cost_scale;   // multiplies every cost, CPU and network (stiffness checks)
-};
-
-struct SimConfig {
-  std::string machine = "ipsc2"; // built-in name or path to a platform XML
-  int nodes = 1;
-  Topology topology = Topology::Cube;
-  Fidelity fidelity = Fidelity::Circuit;
-  Overrides overrides;
-  std::string algorithm = "sequential";
-  std::shared_ptr<const Algorithm> custom; // runs instead of `algorithm` (tests, benchmarks)
-  AlgorithmOptions options;
-  std::string scene_path;
-  int width = 0, height = 0;           // > 0 overrides the scene's size
-  bool compare_with_sequential = true; // render on the host and compare images
-  // Passed to SimGrid after zcube's own settings, so they win: "--cfg=name:value", "--log=...".
-  std::vector<std::string> simgrid_args;
-  bool timeline = false; // record every node's events (the report's "timeline"; --trace, --gantt)
-};
-
-struct SimResult {
-  nlohmann::json report;
-  std::vector<Framebuffer> images; // one per frame (node-delivered)
-  bool ok = true;                  // false: the run failed (e.g. out of node memory)
-  std::string error;
-};
 
 SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded = nullptr);
 
