@@ -8,7 +8,7 @@
 #include "cli/parse.hpp"
 #include "cli/paths.hpp"
 #include "repro/calibrate.hpp"
-#include "sim/batch.hpp"
+#include "run/batch.hpp"
 #include "util/error.hpp"
 
 namespace zc::cli {

@@ -6,7 +6,7 @@
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
 #include "machine/platform_xml.hpp"
-#include "sim/run_flags.hpp"
+#include "run/run_flags.hpp"
 #include "sim/simulation.hpp"
 
 namespace zc::cli {

@@ -7,7 +7,7 @@
 #include "cli/paths.hpp"
 #include "repro/regress.hpp"
 #include "repro/table.hpp"
-#include "sim/batch.hpp"
+#include "run/batch.hpp"
 #include "util/error.hpp"
 
 namespace zc::cli {

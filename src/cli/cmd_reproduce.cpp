@@ -4,7 +4,7 @@
 #include "cli/paths.hpp"
 #include "repro/reproduce.hpp"
 #include "repro/simulate.hpp"
-#include "sim/batch.hpp"
+#include "run/batch.hpp"
 #ifdef ZCUBE_HAVE_MPI
 #include <optional>
 

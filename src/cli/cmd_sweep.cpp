@@ -12,7 +12,7 @@
 #include "repro/reproduce.hpp"
 #include "repro/simulate.hpp"
 #include "repro/sweep.hpp"
-#include "sim/batch.hpp"
+#include "run/batch.hpp"
 #include "util/error.hpp"
 #ifdef ZCUBE_HAVE_MPI
 #include <optional>

@@ -3,7 +3,7 @@
 #include <iomanip>
 #include <sstream>
 
-#include "sim/run_flags.hpp"
+#include "run/run_flags.hpp"
 #include "sim/simgrid_args.hpp"
 #include "util/error.hpp"
 

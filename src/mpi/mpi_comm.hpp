@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "comm/comm.hpp"
-#include "sim/report.hpp"
+#include "run/report.hpp"
 
 namespace zc {
 

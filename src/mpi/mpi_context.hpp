@@ -2,7 +2,7 @@
 // NodeContext of a real MPI process: work is counted, not charged (the hardware has spent the
 // time), phases are measured wall-clock, memory is tracked against an optional limit.
 #include "mpi/mpi_comm.hpp"
-#include "sim/recording_context.hpp"
+#include "run/recording_context.hpp"
 
 namespace zc {
 

@@ -2,7 +2,7 @@
 // `zcube run --backend mpi`: the same algorithm code as the simulator, on the MPI processes of a
 // real machine. Every rank calls run_mpi; rank 0 gets the report (the schema of DESIGN §4, with
 // measured wall-clock times: "measured": true, "backend": "mpi") and the pictures.
-#include "sim/config.hpp"
+#include "run/config.hpp"
 
 namespace zc {
 

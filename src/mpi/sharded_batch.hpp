@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/batch.hpp"
+#include "run/batch.hpp"
 
 namespace zc {
 

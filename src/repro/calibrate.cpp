@@ -14,7 +14,7 @@
 #include "machine/machine.hpp"
 #include "machine/platform_xml.hpp"
 #include "repro/paper_figures.hpp"
-#include "sim/batch.hpp"
+#include "run/batch.hpp"
 #include "util/nnls.hpp"
 
 namespace zc {

@@ -7,7 +7,7 @@
 #include <iostream>
 #include <string>
 
-#include "sim/batch.hpp"
+#include "run/batch.hpp"
 
 namespace zc {
 

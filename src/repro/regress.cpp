@@ -9,7 +9,7 @@
 #include "repro/json_file.hpp"
 #include "repro/sweep.hpp"
 #include "repro/table.hpp"
-#include "sim/batch.hpp"
+#include "run/batch.hpp"
 #include "util/error.hpp"
 
 namespace zc {

@@ -12,7 +12,7 @@
 #include "repro/plot_script.hpp"
 #include "repro/progress.hpp"
 #include "repro/table.hpp"
-#include "sim/batch.hpp"
+#include "run/batch.hpp"
 #include "util/error.hpp"
 
 namespace zc {

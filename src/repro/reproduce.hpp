@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/batch.hpp"
+#include "run/batch.hpp"
 #include "sim/simulation.hpp"
 
 namespace zc {

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/batch.hpp"
+#include "run/batch.hpp"
 
 namespace zc {
 

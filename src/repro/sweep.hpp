@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/run_flags.hpp"
+#include "run/run_flags.hpp"
 #include "sim/simulation.hpp"
 
 namespace zc {

@@ -5,8 +5,8 @@
 #include <simgrid/s4u.hpp>
 
 #include "comm/comm.hpp"
+#include "run/report.hpp"
 #include "sim/delivery.hpp"
-#include "sim/report.hpp"
 
 namespace zc {
 

@@ -1,7 +1,7 @@
 #pragma once
 // NodeContext of a simulated node: charged work advances the virtual clock by counts x costs.
 #include "machine/machine.hpp"
-#include "sim/recording_context.hpp"
+#include "run/recording_context.hpp"
 #include "sim/sim_comm.hpp"
 
 namespace zc {

@@ -9,7 +9,7 @@
 #include <simgrid/s4u.hpp>
 
 #include "machine/machine.hpp"
-#include "sim/fidelity.hpp"
+#include "run/fidelity.hpp"
 
 namespace zc {
 

@@ -17,10 +17,10 @@
 #include "machine/units.hpp"
 #include "raster/image_io.hpp"
 #include "raster/renderer.hpp"
+#include "run/batch.hpp"
+#include "run/report.hpp"
 #include "scene/load.hpp"
-#include "sim/batch.hpp"
 #include "sim/platform_load.hpp"
-#include "sim/report.hpp"
 #include "sim/sim_context.hpp"
 #include "util/error.hpp"
 

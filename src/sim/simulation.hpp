@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "sim/config.hpp"
+#include "run/config.hpp"
 
 namespace zc {
 

@@ -15,7 +15,7 @@
 #include "repro/regress.hpp"
 #include "repro/reproduce.hpp"
 #include "repro/sweep.hpp"
-#include "sim/batch.hpp"
+#include "run/batch.hpp"
 #include "util/error.hpp"
 #include "util/nnls.hpp"
 

@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "sim/batch.hpp"
+#include "run/batch.hpp"
 #include "sim/simulation.hpp"
 #include "trace/chrome_trace.hpp"
 #include "trace/paje_trace.hpp"

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "algo/algorithm.hpp"
-#include "sim/report.hpp"
+#include "run/report.hpp"
 
 namespace zc {
 

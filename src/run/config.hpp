@@ -12,7 +12,7 @@
 #include "algo/algorithm.hpp"
 #include "machine/topology.hpp"
 #include "raster/framebuffer.hpp"
-#include "sim/fidelity.hpp"
+#include "run/fidelity.hpp"
 
 namespace zc {
 

@@ -1,4 +1,4 @@
-#include "sim/report.hpp"
+#include "run/report.hpp"
 
 #include <sys/resource.h>
 

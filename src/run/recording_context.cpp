@@ -1,4 +1,4 @@
-#include "sim/recording_context.hpp"
+#include "run/recording_context.hpp"
 
 #include <algorithm>
 

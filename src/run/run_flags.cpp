@@ -1,4 +1,4 @@
-#include "sim/run_flags.hpp"
+#include "run/run_flags.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "sim/config.hpp"
+#include "run/config.hpp"
 
 namespace zc {
 

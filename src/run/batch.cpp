@@ -1,4 +1,4 @@
-#include "sim/batch.hpp"
+#include "run/batch.hpp"
 
 #include <poll.h>
 #include <sys/wait.h>

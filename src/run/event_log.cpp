@@ -1,4 +1,4 @@
-#include "sim/event_log.hpp"
+#include "run/event_log.hpp"
 
 #include <map>
 #include <tuple>

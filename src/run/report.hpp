@@ -9,9 +9,9 @@
 #include <nlohmann/json.hpp>
 
 #include "raster/framebuffer.hpp"
+#include "run/config.hpp"
+#include "run/event_log.hpp"
 #include "scene/scene.hpp"
-#include "sim/config.hpp"
-#include "sim/event_log.hpp"
 #include "util/counters.hpp"
 
 namespace zc {

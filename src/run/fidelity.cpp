@@ -1,4 +1,4 @@
-#include "sim/fidelity.hpp"
+#include "run/fidelity.hpp"
 
 #include "util/error.hpp"
 
