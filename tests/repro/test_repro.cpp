@@ -14,8 +14,8 @@
 #include "repro/paper_figures.hpp"
 #include "repro/regress.hpp"
 #include "repro/reproduce.hpp"
+#include "repro/simulate.hpp"
 #include "repro/sweep.hpp"
-#include "run/batch.hpp"
 #include "util/error.hpp"
 #include "util/nnls.hpp"
 
@@ -229,7 +229,8 @@ TEST(Batch, AFailingPointDoesNotLoseTheOthers) {
   SimConfig missing = good;
   missing.scene_path = kRoot + "/no/such/scene.json";
   int calls = 0;
-  const auto r = run_batch({missing, good, missing}, 2, [&](const BatchProgress&) { ++calls; });
+  const auto r =
+      simulate_batch({missing, good, missing}, 2, [&](const BatchProgress&) { ++calls; });
   ASSERT_EQ(r.size(), 3u);
   EXPECT_EQ(r[0]["status"], "error");
   EXPECT_NE(r[0]["error"].get<std::string>().find("scene.json"), std::string::npos);
@@ -378,7 +379,7 @@ TEST(Reproduce, CommittedResultsAreCurrentForASubset) {
   const std::vector<SimConfig> cfgs = {
       pick(kurc, "t2/16/1pot/pair-rs"), pick(charles, "el/teapot/256/cube/4"),
       pick(charles, "seq/teapot/256"), pick(blazek, "node-initiated/4/4")};
-  const auto r = run_batch(cfgs, 2);
+  const auto r = simulate_batch(cfgs, 2);
   for (const auto& rep : r)
     ASSERT_EQ(rep["status"], "ok") << rep.dump();
   // Equal to the committed figure within its printed precision.
