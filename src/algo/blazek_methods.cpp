@@ -1,15 +1,6 @@
 #include "algo/blazek_methods.hpp"
 
 namespace zc {
-namespace blazek {
-void host_initiated_host(NodeContext&);
-void host_initiated_node(NodeContext&);
-void describe_round_robin(NodeContext&);
-void node_initiated_node(NodeContext&);
-void object_forwarding_node(NodeContext&);
-void host_broadcast_host(NodeContext&);
-void host_broadcast_node(NodeContext&);
-} // namespace blazek
 
 std::vector<Algorithm> blazek_algorithms() {
   auto make = [](const char* name, const char* summary, auto host, auto node,

@@ -16,14 +16,6 @@
 
 namespace zc::cli {
 
-// The default scene ships with the sources and the installed data; found from the working
-// directory, else where the data is (cli/paths.hpp).
-std::string default_scene_path() {
-  const std::string rel = "scenes/teapot.json";
-  if (std::filesystem::exists(rel)) return rel;
-  return source_root() + "/" + rel;
-}
-
 static int cmd_render(std::vector<std::string> args) {
   CLI::App app{"Render a scene on the host (real wall-clock; the reference image)", "zcube render"};
   std::string scene_path = default_scene_path(), image = "out/teapot.png", depth, size, report;

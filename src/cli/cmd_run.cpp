@@ -25,8 +25,6 @@
 
 namespace zc::cli {
 
-std::string default_scene_path(); // cmd_render.cpp
-
 // The report fields a paper figure is matched on, known before the run (the scene's own size
 // unless --size overrides it).
 static nlohmann::json report_header(const SimConfig& cfg) {

@@ -23,8 +23,6 @@
 
 namespace zc::cli {
 
-std::string default_scene_path(); // cmd_render.cpp
-
 // Quantities are checked alone, before anything runs: `--latency 275,27` is a usage error, not
 // two failed points.
 static void check_quantities(const std::vector<SweepAxis>& axes) {

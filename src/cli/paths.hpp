@@ -21,4 +21,12 @@ inline std::string source_root() {
   return ZCUBE_SOURCE_DIR;
 }
 
+// The scene run, render and sweep use when none is given. It ships with the sources and the
+// installed data; found from the working directory, else where the data is (source_root).
+inline std::string default_scene_path() {
+  const std::string rel = "scenes/teapot.json";
+  if (std::filesystem::exists(rel)) return rel;
+  return source_root() + "/" + rel;
+}
+
 } // namespace zc::cli

@@ -85,21 +85,6 @@ ActivePixels zbuffer_spans(const SpanLists& L, const TriangleBatch& batch, const
   return A;
 }
 
-ActivePixels slice_rows(const ActivePixels& a, int y0, int y1) {
-  y0 = std::max(y0, a.y0);
-  y1 = std::max(y0, std::min(y1, a.y1));
-  ActivePixels r;
-  r.width = a.width;
-  r.y0 = y0;
-  r.y1 = y1;
-  const std::uint32_t b = a.row_begin[y0 - a.y0], e = a.row_begin[y1 - a.y0];
-  r.pixels.assign(a.pixels.begin() + b, a.pixels.begin() + e);
-  r.row_begin.resize(std::size_t(y1 - y0) + 1);
-  for (int y = y0; y <= y1; ++y)
-    r.row_begin[y - y0] = a.row_begin[y - a.y0] - b;
-  return r;
-}
-
 ActivePixels merge_active(const ActivePixels& a, const ActivePixels& b, Counters& c) {
   if (a.y0 != b.y0 || a.y1 != b.y1 || a.width != b.width)
     throw std::logic_error("merge_active: pixel sets cover different rows");
@@ -175,22 +160,8 @@ WinningPixel get_pixel(const std::uint8_t*& p, const std::uint8_t* end) {
 }
 } // namespace
 
-// Layout: int32 width, y0, y1; uint32 count per row; then per pixel x(2) rgb(3) z(4) id(4).
-std::vector<std::uint8_t> serialize(const ActivePixels& a) {
-  std::vector<std::uint8_t> out(12 + 4 * std::size_t(a.y1 - a.y0) +
-                                kWirePixelBytes * a.pixels.size());
-  std::size_t at = 0;
-  put(out, at, std::int32_t(a.width));
-  put(out, at, std::int32_t(a.y0));
-  put(out, at, std::int32_t(a.y1));
-  for (int y = a.y0; y < a.y1; ++y)
-    put(out, at, a.row_count(y));
-  for (const auto& p : a.pixels)
-    put_pixel(out, at, p);
-  return out;
-}
-
-// Layout: u32 row count; per non-empty row (u32 y, u32 count); then the pixels as serialize().
+// Layout: u32 row count; per non-empty row (u32 y, u32 count); then per pixel x(2) rgb(3) z(4)
+// id(4).
 std::vector<std::uint8_t> serialize_sparse(const ActivePixels& a) {
   std::uint32_t rows = 0;
   for (int y = a.y0; y < a.y1; ++y)
@@ -227,22 +198,6 @@ ActivePixels deserialize_sparse(const std::uint8_t* p, std::size_t size, int wid
   }
   for (int y = y0; y < y1; ++y)
     a.row_begin[y - y0 + 1] = a.row_begin[y - y0] + count[y - y0];
-  a.pixels.resize(a.row_begin.back());
-  for (auto& px : a.pixels)
-    px = get_pixel(p, end);
-  return a;
-}
-
-ActivePixels deserialize_active(const std::uint8_t* p, std::size_t size) {
-  const std::uint8_t* end = p + size;
-  ActivePixels a;
-  a.width = get<std::int32_t>(p, end);
-  a.y0 = get<std::int32_t>(p, end);
-  a.y1 = get<std::int32_t>(p, end);
-  if (a.y1 < a.y0 || a.width < 0) throw std::runtime_error("active pixels: bad header");
-  a.row_begin.assign(std::size_t(a.y1 - a.y0) + 1, 0);
-  for (int y = a.y0; y < a.y1; ++y)
-    a.row_begin[y - a.y0 + 1] = a.row_begin[y - a.y0] + get<std::uint32_t>(p, end);
   a.pixels.resize(a.row_begin.back());
   for (auto& px : a.pixels)
     px = get_pixel(p, end);

@@ -61,9 +61,6 @@ struct ActivePixels {
 ActivePixels zbuffer_spans(const SpanLists& lists, const TriangleBatch& batch,
                            const ShadeContext& ctx, int width, Counters& c);
 
-// Extracts rows [y0, y1) (a copy; used to split pixel sets by screen region).
-ActivePixels slice_rows(const ActivePixels& a, int y0, int y1);
-
 // Merges two pixel sets over the same rows: per row a merge of two x-sorted lists, the nearer
 // pixel (depth, then lower id) winning at equal x. Every pixel of either set is visited once (a
 // comparison or a copy into the result): |retained| + |received| merge operations (c.merge_ops),
@@ -94,9 +91,5 @@ ActivePixels deserialize_sparse(const std::uint8_t* data, std::size_t size, int 
 
 // Writes a pixel set into a frame buffer holding (at least) its rows, without comparisons.
 void scatter_active(const ActivePixels& a, Framebuffer& fb);
-
-// Wire format: the rows and their pixels, as they travel in a message.
-std::vector<std::uint8_t> serialize(const ActivePixels& a);
-ActivePixels deserialize_active(const std::uint8_t* data, std::size_t size);
 
 } // namespace zc
