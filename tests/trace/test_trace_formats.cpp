@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "run/batch.hpp"
+#include "repro/simulate.hpp"
 #include "sim/simulation.hpp"
 #include "trace/chrome_trace.hpp"
 #include "trace/paje_trace.hpp"
@@ -55,7 +55,7 @@ const std::vector<nlohmann::json>& reports() {
     for (const auto& k : cases())
       for (Fidelity f : {Fidelity::Analytic, Fidelity::Flow, Fidelity::Circuit})
         pts.push_back(config(k, f));
-    return run_batch(pts, 2);
+    return simulate_batch(pts, 2);
   }();
   return r;
 }
