@@ -104,6 +104,7 @@ std::vector<MachineSpec> make_specs() {
     m.name = "ipsc2";
     m.description = "Intel iPSC/2: 80386+80387 16 MHz nodes, DCM circuit-switched hypercube";
     m.memory_bytes = 4.0 * 1048576; // 4 MB base (MACHINES.md)
+    m.os_resident_bytes = 512.0 * 1024; // NX/2 + program: 256 KiB..1 MiB (docs/memory.md)
     m.net.startup_short_s = 275e-6; // Blazek ch. IV, read as microseconds (MACHINES.md)
     m.net.startup_long_s = 275e-6;
     m.net.short_max_bytes = 100;
@@ -122,6 +123,7 @@ std::vector<MachineSpec> make_specs() {
     m.name = "ipsc860";
     m.description = "Intel iPSC/860: i860 XR 40 MHz nodes, DCM circuit-switched hypercube";
     m.memory_bytes = 8.0 * 1048576; // ORNL CSEP
+    m.os_resident_bytes = 1024.0 * 1024; // NX + program: 0.5..2 MiB (docs/memory.md)
     m.net.startup_short_s = 75e-6;  // Bokhari 1990 (MACHINES.md, low-medium confidence)
     m.net.startup_long_s = 136e-6;
     m.net.short_max_bytes = 100;
@@ -140,6 +142,7 @@ std::vector<MachineSpec> make_specs() {
     m.name = "volvox";
     m.description = "Archipel Volvox: i860 compute + T800 transputer links, store-and-forward";
     m.memory_bytes = 8.0 * 1048576; // assumption: i860 board as the iPSC/860's
+    m.os_resident_bytes = 1024.0 * 1024; // assumption: as the iPSC/860's NX (docs/memory.md)
     m.net.startup_short_s = 50e-6;  // assumption (MACHINES.md): software overhead per hop
     m.net.startup_long_s = 50e-6;
     m.net.short_max_bytes = 100;

@@ -52,6 +52,10 @@ struct MachineSpec {
   std::string name;        // ipsc2, ipsc860, volvox
   std::string description; // one line for the XML and the README
   double memory_bytes = 0; // per node
+  // Memory the node's operating system keeps resident (kernel, message buffer pool, the program's
+  // own code and stack), charged on every node before the algorithm's first buffer: NX/2 on the
+  // iPSC/2, NX on the iPSC/860 (docs/memory.md: derivation and range).
+  double os_resident_bytes = 0;
   NetworkParams net;
   std::string cpu; // the CPU model (machine/cpu_model.hpp) its cost table comes from
   CostTable cost;  // seconds per counted operation

@@ -121,6 +121,8 @@ std::string platform_xml(const MachineSpec& spec, int nodes, Topology topo,
   prop("zcube.switching", n.switching == Switching::Circuit ? "circuit" : "store-and-forward");
   prop("zcube.node_memory", with_unit(spec.memory_bytes, "B",
                                       {{1073741824.0, "Gi"}, {1048576.0, "Mi"}, {1024.0, "Ki"}}));
+  prop("zcube.os_resident", with_unit(spec.os_resident_bytes, "B",
+                                      {{1073741824.0, "Gi"}, {1048576.0, "Mi"}, {1024.0, "Ki"}}));
   CostTable cost = spec.cost;
   for (auto& [id, v] : cost.fields()) // "cost_<field>" -> "zcube.cycles.<field>"
     prop("zcube.cycles." + id.substr(5), format_double(*v * clock));

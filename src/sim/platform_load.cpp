@@ -265,6 +265,11 @@ PlatformModel read_platform(const sg::Engine& e, const std::string& where) {
   const double memory =
       parse_bytes(zone_prop(z, "zcube.node_memory", where), where + ": zcube.node_memory");
   checked(memory, where, "zcube.node_memory", 0, true);
+  // The node operating system's resident size (docs/memory.md); files without it: none.
+  if (const char* os = z->get_property("zcube.os_resident")) {
+    m.os_resident = parse_bytes(os, where + ": zcube.os_resident");
+    checked(m.os_resident, where, "zcube.os_resident", 0, false);
+  }
   CostTable cycles;
   for (auto& [id, v] : cycles.fields()) {
     const std::string key = "zcube.cycles." + id.substr(5);

@@ -22,6 +22,7 @@ struct PlatformModel {
   NetworkParams net;
   std::vector<CostTable> cost; // per node: cycles / host speed
   std::vector<double> memory;  // per node
+  double os_resident = 0;      // per node: the operating system's share of `memory`
 };
 
 // Declares the configuration flags a zcube platform sets that SimGrid declares only under SMPI

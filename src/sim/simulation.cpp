@@ -120,6 +120,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   std::vector<char> finished(P + 1, 0);
   auto body = [&](int r, const std::function<void(NodeContext&)>& fn) {
     try {
+      if (r < P && pm.os_resident > 0) ctxs[r]->alloc(pm.os_resident, "node operating system");
       fn(*ctxs[r]);
       finished[r] = 1;
     } catch (const OutOfNodeMemory& ex) {
@@ -168,7 +169,8 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
       {"per_byte_s", pm.net.per_byte_s},
       {"per_hop_s", pm.net.per_hop_s},
       {"switching", pm.net.switching == Switching::Circuit ? "circuit" : "store-and-forward"},
-      {"node_memory_bytes", pm.memory.empty() ? 0.0 : pm.memory[0]}};
+      {"node_memory_bytes", pm.memory.empty() ? 0.0 : pm.memory[0]},
+      {"os_resident_bytes", pm.os_resident}};
 
   add_image_section(j, images, scene, cfg, res.ok, res.images);
   j["host"] = {{"wall_time_s",

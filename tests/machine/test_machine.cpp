@@ -118,6 +118,7 @@ TEST(Platforms, CompactSimGridNativeFiguresCostsOnce) {
         "<link id=\"host-up\" bandwidth=\"1MBps\" latency=\"1ms\"/>",
         "<prop id=\"zcube.switching\" value=\"circuit\"/>",
         "<prop id=\"zcube.node_memory\" value=\"4MiB\"/>",
+        "<prop id=\"zcube.os_resident\" value=\"512KiB\"/>",
         "<prop id=\"zcube.cycles.triangles_setup\""})
     EXPECT_NE(x.find(k), std::string::npos) << k;
   // Costs once (17 cycle figures), no host-by-host or route-by-route listing: the 1024-node file
