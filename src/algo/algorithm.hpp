@@ -98,6 +98,11 @@ public:
   };
   Phase phase(const std::string& name) { return Phase(*this, name); }
 
+  // The paper's timed region starts here on this node (its timer read once the input is in place,
+  // docs/papers.md). The report's timed_s is the longest (finish - start) over the nodes; without
+  // a call the whole run is timed.
+  virtual void start_timed_region() = 0;
+
   // Modelled node memory: alloc throws OutOfNodeMemory when the node's capacity is exceeded.
   virtual void alloc(double bytes, const std::string& what) = 0;
   virtual void release(double bytes) = 0;

@@ -4,6 +4,7 @@
 #include "algo/elastic.hpp"
 #include "algo/kurc_pixel_merging.hpp"
 #include "algo/pingpong.hpp"
+#include "algo/scanline_baseline.hpp"
 #include "algo/sequential.hpp"
 #include "util/error.hpp"
 
@@ -12,7 +13,7 @@ namespace zc {
 const std::vector<Algorithm>& algorithms() {
   static const std::vector<Algorithm> all = [] {
     std::vector<Algorithm> v = {sequential_algorithm(), elastic_algorithm(), pingpong_algorithm(),
-                                comm_check_algorithm()};
+                                comm_check_algorithm(), scanline_baseline_algorithm()};
     for (auto& a : kurc_algorithms())
       v.push_back(a);
     for (auto& a : blazek_algorithms())

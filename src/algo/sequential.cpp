@@ -12,6 +12,9 @@ void sequential_node(NodeContext& ctx) {
   if (ctx.rank() != 0) return;
   const Scene& base = ctx.scene();
   const int frames = ctx.options().frames;
+  // The scene it renders: vertices of six reals, triangles of three vertex numbers (Charles et
+  // al. §4's records).
+  ctx.alloc(double(base.vertices.size() * sizeof(Vertex) + base.triangles.size() * 12), "scene");
   for (int f = 0; f < frames; ++f) {
     const NodeRenderer nr(base, camera_at_frame(base.camera, f, frames));
     const double fb_bytes = double(base.width) * base.height * 11.0; // rgb + depth + id

@@ -25,6 +25,11 @@ void RecordingContext::phase_end() {
   if (stats_.log) stats_.log->phases.push_back({name, int(open_.size()), t0, t1});
 }
 
+void RecordingContext::start_timed_region() {
+  stats_.timed_start_s = comm_.now();
+  stats_.timed = true;
+}
+
 void RecordingContext::alloc(double bytes, const std::string& what) {
   stats_.memory += bytes;
   stats_.peak_memory = std::max(stats_.peak_memory, stats_.memory);

@@ -21,6 +21,8 @@ void to_json(nlohmann::json& j, const NodeRecord& r) {
        {"bytes_sent", r.stats.bytes_sent},
        {"messages", r.stats.messages},
        {"peak_memory", r.stats.peak_memory},
+       {"timed", r.stats.timed},
+       {"timed_start_s", r.stats.timed_start_s},
        {"phase_order", r.phase_order},
        {"phase_totals", r.phase_totals},
        {"phase_work", work},
@@ -37,6 +39,8 @@ void from_json(const nlohmann::json& j, NodeRecord& r) {
   r.stats.bytes_sent = j.at("bytes_sent");
   r.stats.messages = j.at("messages");
   r.stats.peak_memory = j.at("peak_memory");
+  r.stats.timed = j.value("timed", false);
+  r.stats.timed_start_s = j.value("timed_start_s", 0.0);
   r.phase_order = j.at("phase_order").get<std::vector<std::string>>();
   r.phase_totals = j.at("phase_totals").get<std::map<std::string, double>>();
   r.phase_work.clear();
@@ -134,6 +138,14 @@ void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, 
     busy_sum += s.busy_s;
   }
   const double busy_mean = P > 0 ? busy_sum / P : 0.0;
+  // The paper's timed region (docs/papers.md): the longest (finish - start) over the nodes that
+  // started one; absent when no node did (the whole run is timed).
+  double timed_s = -1;
+  for (int r = 0; r < P; ++r) {
+    const NodeStats& s = nodes[std::size_t(r)].stats;
+    if (s.timed) timed_s = std::max(timed_s, s.finish_s - s.timed_start_s);
+  }
+  if (timed_s >= 0) j["timed_s"] = timed_s;
   j["communication"] = {
       {"messages", msgs}, {"bytes", bytes}, {"concurrent_volume_bytes", max_sent}};
   j["counters"] = total;

@@ -22,6 +22,8 @@ struct NodeStats {
   std::uint64_t bytes_sent = 0, messages = 0;
   double memory = 0, peak_memory = 0;
   std::shared_ptr<EventLog> log; // the node's timeline; null unless one was asked for
+  bool timed = false;            // the node started the paper's timed region (start_timed_region)
+  double timed_start_s = 0;      // when
 };
 
 // A picture (or, partial, rows of one) handed over by a node.
