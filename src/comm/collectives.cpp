@@ -316,6 +316,9 @@ std::vector<std::int64_t> allreduce(Comm& c, std::vector<std::int64_t> v, Op op,
 std::vector<double> allreduce(Comm& c, std::vector<double> v, Op op, int tag) {
   return allreduce_impl(c, std::move(v), op, tag);
 }
+std::vector<std::int32_t> allreduce(Comm& c, std::vector<std::int32_t> v, Op op, int tag) {
+  return allreduce_impl(c, std::move(v), op, tag);
+}
 
 std::vector<std::int64_t> prefix_sum(Comm& c, std::vector<std::int64_t> v, int tag) {
   const int p = P(c), r = c.rank();

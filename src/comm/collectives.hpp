@@ -37,6 +37,9 @@ std::vector<std::int64_t> allreduce(Comm& c, std::vector<std::int64_t> v, Op op,
                                     int tag = kCollectiveTagBase + 7);
 std::vector<double> allreduce(Comm& c, std::vector<double> v, Op op,
                               int tag = kCollectiveTagBase + 8);
+// 32-bit entries (the papers' row loads and pixel counts are C ints: 4 bytes each on the wire).
+std::vector<std::int32_t> allreduce(Comm& c, std::vector<std::int32_t> v, Op op,
+                                    int tag = kCollectiveTagBase + 7);
 
 // Inclusive prefix sum over ranks, element-wise: node r gets v_0 + ... + v_r.
 std::vector<std::int64_t> prefix_sum(Comm& c, std::vector<std::int64_t> v,
