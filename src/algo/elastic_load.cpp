@@ -10,7 +10,10 @@ namespace zc::elastic {
 std::vector<std::int64_t> multireduce_load(NodeContext& ctx,
                                            const std::vector<std::int64_t>& local) {
   auto ph = ctx.phase("multireduce_load");
-  auto global = coll::allreduce(ctx.comm(), local, coll::Op::Sum);
+  // A row's load (triangles crossing it) is a C int: 4 bytes an entry on the wire.
+  const auto sum = coll::allreduce(
+      ctx.comm(), std::vector<std::int32_t>(local.begin(), local.end()), coll::Op::Sum);
+  const std::vector<std::int64_t> global(sum.begin(), sum.end());
   Counters w;
   w.rows_scanned = std::uint64_t(local.size()) * std::uint64_t(std::max(1, ctx.comm().dimension()));
   ctx.charge(w);

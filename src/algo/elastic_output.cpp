@@ -11,13 +11,13 @@ namespace zc::elastic {
 namespace {
 
 // Node 0's full picture from the slices' colours (--output gather).
-Framebuffer assemble_picture(NodeContext& ctx, const NodeRenderer& nr,
-                             const std::vector<Bytes>& slices, const std::vector<int>& bounds) {
+Framebuffer assemble_picture(const NodeRenderer& nr, const std::vector<Bytes>& slices,
+                             const std::vector<int>& bounds) {
   Framebuffer full = nr.make_framebuffer(RowSet::all(nr.height()));
   for (std::size_t k = 0; k < slices.size(); ++k)
     std::copy(slices[k].begin(), slices[k].end(),
               full.rgb().begin() + std::ptrdiff_t(3) * bounds[k] * nr.width());
-  ctx.charge_packing(full.rgb().size());
+  // Each slice lands in its own rows of the picture (received in place): no packing charged.
   return full;
 }
 
@@ -58,7 +58,7 @@ void output_picture(NodeContext& ctx, const NodeRenderer& nr, Framebuffer slice,
   auto ph = ctx.phase("output");
   std::vector<Bytes> slices;
   if (out.gather) {
-    ctx.charge_packing(slice.rgb().size());
+    // The slice's colours are one contiguous array, sent in place.
     slices = coll::gatherv(ctx.comm(), 0, slice.rgb());
   }
   const RowSet rows = slice.rows();
@@ -70,7 +70,7 @@ void output_picture(NodeContext& ctx, const NodeRenderer& nr, Framebuffer slice,
   if (!out.gather) ctx.deliver_rows(out.frame, std::move(slice));
   if (ctx.rank() != 0) return;
   Framebuffer full;
-  if (out.gather) full = assemble_picture(ctx, nr, slices, bounds);
+  if (out.gather) full = assemble_picture(nr, slices, bounds);
   if (out.last_frame) record_slice_table(ctx, stats, global_load, out.scene_triangles);
   if (out.gather) ctx.deliver_image(out.frame, std::move(full));
 }

@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "algo/elastic_steps.hpp"
+#include "algo/elastic_wire.hpp"
 #include "comm/collectives.hpp"
 #include "comm/wire.hpp"
 
@@ -34,7 +35,8 @@ std::vector<Vertex> scatter_vertices(NodeContext& ctx, const Scene& scene) {
     for (int k = 0; k < P; ++k)
       parts.push_back(pack(scene.vertices.data() + block_lo(V, P, k),
                            block_lo(V, P, k + 1) - block_lo(V, P, k)));
-    ctx.charge_packing(V * sizeof(Vertex));
+    // Each block is a contiguous part of the vertex array: PPCM scatters it in place (zcube's copy
+    // into a payload is an artefact of its wire format), so no packing is charged.
   }
   auto mine = unpack<Vertex>(coll::scatterv(ctx.comm(), 0, std::move(parts)));
   ctx.alloc(double(mine.size() * sizeof(Vertex)), "vertex block");
@@ -45,20 +47,30 @@ std::vector<TriRec> scatter_triangles(NodeContext& ctx, const Scene& scene) {
   auto ph = ctx.phase("scatter_triangles");
   const int P = ctx.nodes();
   const std::size_t T = scene.triangles.size();
+  const bool with_material = materials_travel(scene);
+  const std::uint32_t material = scene.triangles.empty() ? 0 : scene.triangles.front().material;
+  const std::size_t wire = kTriangleWireBytes + (with_material ? 4 : 0);
   std::vector<Bytes> parts;
   if (ctx.rank() == 0) {
+    // A block of the paper's triangle array (three vertex numbers each) is contiguous and
+    // scattered in place: no packing charged (zcube builds the wire form from its own records).
     for (int k = 0; k < P; ++k) {
-      std::vector<TriRec> block;
+      Bytes block;
       for (std::size_t i = block_lo(T, P, k); i < block_lo(T, P, k + 1); ++i) {
         const Triangle& t = scene.triangles[i];
-        block.push_back({std::uint32_t(i), {t.v[0], t.v[1], t.v[2]}, t.material});
+        append_triangle(block, {std::uint32_t(i), {t.v[0], t.v[1], t.v[2]}, t.material},
+                        with_material);
       }
-      parts.push_back(pack(block));
+      parts.push_back(std::move(block));
     }
-    ctx.charge_packing(T * sizeof(TriRec));
   }
-  auto mine = unpack<TriRec>(coll::scatterv(ctx.comm(), 0, std::move(parts)));
-  ctx.alloc(double(mine.size() * sizeof(TriRec)), "triangle block");
+  const Bytes got = coll::scatterv(ctx.comm(), 0, std::move(parts));
+  const auto first = std::uint32_t(block_lo(T, P, ctx.rank()));
+  std::vector<TriRec> mine(got.size() / wire);
+  for (std::size_t i = 0; i < mine.size(); ++i)
+    mine[i] =
+        read_triangle(got.data() + i * wire, first + std::uint32_t(i), with_material, material);
+  ctx.alloc(double(got.size()), "triangle block");
   return mine;
 }
 
@@ -82,6 +94,7 @@ LocalScene scatter_scene(NodeContext& ctx) {
   const int P = ctx.nodes(), r = ctx.rank();
   LocalScene local;
   local.scene_vertices = scene.vertices.size();
+  local.scene_triangles = scene.triangles.size();
   local.first_vertex = block_lo(local.scene_vertices, P, r);
   local.vertices = scatter_vertices(ctx, scene);
   local.triangles = scatter_triangles(ctx, scene);

@@ -28,11 +28,12 @@ int block_owner(std::size_t n, int P, std::size_t i);
 
 // What a node holds for the whole animation once the scene is scattered.
 struct LocalScene {
-  std::size_t first_vertex = 0;   // global id of vertices[0]
-  std::size_t scene_vertices = 0; // V, the scene's vertex count
-  std::vector<Vertex> vertices;   // this node's block of vertices
-  std::vector<TriRec> triangles;  // this node's block of triangles
-  std::vector<glm::vec2> uvs;     // every texture coordinate (textured scenes only)
+  std::size_t first_vertex = 0;    // global id of vertices[0]
+  std::size_t scene_vertices = 0;  // V, the scene's vertex count
+  std::size_t scene_triangles = 0; // T, the scene's triangle count
+  std::vector<Vertex> vertices;    // this node's block of vertices
+  std::vector<TriRec> triangles;   // this node's block of triangles
+  std::vector<glm::vec2> uvs;      // every texture coordinate (textured scenes only)
 };
 
 // Scatter(Vertices); Scatter(Triangles): equal contiguous blocks from node 0. Texture coordinates

@@ -17,8 +17,9 @@ void BroadcastVertices::exchange(NodeContext& ctx, const LocalScene& local,
     auto part = unpack<ProjectedVertex>(b);
     all.insert(all.end(), part.begin(), part.end());
   }
+  // Each node's projected vertices are one contiguous array, multi-broadcast in place into the
+  // array of all of them (PPCM): no packing charged.
   bytes = double(all.size() * sizeof(ProjectedVertex));
-  ctx.charge_packing(std::size_t(bytes));
 }
 
 namespace {

@@ -6,10 +6,12 @@
 //   Record      what MultiScatter(Triangles) sends per triangle and slice;
 //   record()/triangle()/vertices()  making and reading such a record.
 #include <cstdint>
+#include <cstring>
 #include <unordered_map>
 #include <vector>
 
 #include "algo/elastic_steps.hpp"
+#include "comm/wire.hpp"
 
 namespace zc::elastic {
 
@@ -24,6 +26,10 @@ struct BroadcastVertices {
                 const std::vector<ProjectedVertex>& mine);
   const ProjectedVertex& at(std::uint32_t id) const { return all[id]; }
   Record record(const TriRec& t) const { return t; }
+  // What a MultiScatter record carries besides the triangle's wire form: nothing.
+  static constexpr std::size_t kExtraWireBytes = 0;
+  void append_extra(Bytes&, const TriRec&) const {}
+  static Record from_wire(const TriRec& t, const std::uint8_t*) { return t; }
   static const TriRec& triangle(const Record& r) { return r; }
   void vertices(const Record& r, const ProjectedVertex* p[3]) const {
     for (int k = 0; k < 3; ++k)
@@ -45,6 +51,17 @@ struct RequestedVertices {
                 const std::vector<ProjectedVertex>& mine);
   const ProjectedVertex& at(std::uint32_t id) const { return known.at(id); }
   Record record(const TriRec& t) const { return {t, {at(t.v[0]), at(t.v[1]), at(t.v[2])}}; }
+  // A MultiScatter record carries the triangle's three projected vertices.
+  static constexpr std::size_t kExtraWireBytes = 3 * sizeof(ProjectedVertex);
+  void append_extra(Bytes& b, const TriRec& t) const {
+    for (int k = 0; k < 3; ++k)
+      append(b, &at(t.v[k]), 1);
+  }
+  static Record from_wire(const TriRec& t, const std::uint8_t* extra) {
+    Record r{t, {}};
+    std::memcpy(r.pv, extra, kExtraWireBytes);
+    return r;
+  }
   static const TriRec& triangle(const Record& r) { return r.t; }
   static void vertices(const Record& r, const ProjectedVertex* p[3]) {
     for (int k = 0; k < 3; ++k)

@@ -1,0 +1,48 @@
+#include "algo/elastic_wire.hpp"
+
+#include <cstring>
+#include <stdexcept>
+
+namespace zc::elastic {
+
+bool materials_travel(const Scene& s) {
+  for (const Triangle& t : s.triangles)
+    if (t.material != s.triangles.front().material) return true;
+  return false;
+}
+
+std::size_t triangle_wire_bytes(const Scene& s) {
+  return kTriangleWireBytes + (materials_travel(s) ? 4 : 0);
+}
+
+void append_triangle(Bytes& b, const TriRec& t, bool with_material) {
+  append(b, t.v, 3);
+  if (with_material) append(b, &t.material, 1);
+}
+
+TriRec read_triangle(const std::uint8_t* p, std::uint32_t id, bool with_material,
+                     std::uint32_t material) {
+  TriRec t{id, {0, 0, 0}, material};
+  std::memcpy(t.v, p, kTriangleWireBytes);
+  if (with_material) std::memcpy(&t.material, p + kTriangleWireBytes, 4);
+  return t;
+}
+
+Bytes selection_header(std::size_t n, const std::vector<std::uint32_t>& picked) {
+  Bytes b((n + 7) / 8, 0);
+  for (auto i : picked)
+    b[i / 8] = std::uint8_t(b[i / 8] | (1u << (i % 8)));
+  return b;
+}
+
+std::vector<std::uint32_t> read_selection(const Bytes& msg, std::size_t n,
+                                          std::size_t& header_bytes) {
+  header_bytes = (n + 7) / 8;
+  if (msg.size() < header_bytes) throw std::runtime_error("multiscatter: message too short");
+  std::vector<std::uint32_t> picked;
+  for (std::size_t i = 0; i < n; ++i)
+    if (msg[i / 8] & (1u << (i % 8))) picked.push_back(std::uint32_t(i));
+  return picked;
+}
+
+} // namespace zc::elastic
