@@ -21,17 +21,31 @@ protected:
                 Counters& w) override {
     Comm& c = ctx.comm();
     const int P = c.size(), r = c.rank(), H = int(owner.size());
+    // §3.2: "Each processor holds a local z-buffer of size N x N/P" (its owned scanlines).
+    std::uint64_t owned_rows = 0;
+    for (int node : owner)
+      owned_rows += node == r;
+    ctx.alloc(double(owned_rows) * width_ * double(Framebuffer::kLocationBytes),
+              "z-buffer of the owned scanlines");
     std::vector<Bytes> out(P);
+    double gathered = 0; // send buffers gathered from several runs of scanlines (copies)
     for (int k = 0; k < P; ++k) {
       const auto owned_by_k = [&](int y) { return owner[y] == k; };
       out[k] = serialize_sparse(select_rows(wpa_, owned_by_k));
-      if (k != r && fragmented(H, owned_by_k)) w.bytes_packed += out[k].size();
+      if (k != r && fragmented(H, owned_by_k)) gathered += double(out[k].size());
     }
+    w.bytes_packed += std::uint64_t(gathered);
+    ctx.alloc(gathered, "send buffers");
     // Step k of the schedule exchanges with node r ^ k.
     m.step_bytes.assign(std::size_t(std::max(0, P - 1)), 0.0);
     for (int k = 1; k < P; ++k)
       m.step_bytes[k - 1] = double(out[r ^ k].size());
     auto in = coll::alltoallv(c, std::move(out), coll::AllToAll::Pairwise);
+    double received = 0; // every other node's pixels are held until merged
+    for (int k = 0; k < P; ++k)
+      if (k != r) received += double(in[k].size());
+    ctx.alloc(received, "receive buffers");
+    ctx.release(gathered);
     mine_ = deserialize_sparse(in[r].data(), in[r].size(), width_, 0, H);
     for (int k = 0; k < P; ++k) {
       if (k == r) continue;
@@ -39,6 +53,7 @@ protected:
       m.merge_load += got.count();
       mine_ = merge_active(mine_, got, w);
     }
+    ctx.release(received);
   }
 };
 

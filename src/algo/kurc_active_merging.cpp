@@ -21,7 +21,9 @@ std::vector<int> ActivePixelMerging::share_scanlines(NodeContext& ctx, Counters&
   std::vector<std::int64_t> counts(H);
   for (int y = 0; y < H; ++y)
     counts[y] = wpa_.row_count(y);
-  const auto global = coll::allreduce(ctx.comm(), counts, coll::Op::Sum);
+  // A scanline's count is a C int: 4 bytes an entry on the wire.
+  const auto global = coll::allreduce(
+      ctx.comm(), std::vector<std::int32_t>(counts.begin(), counts.end()), coll::Op::Sum);
   const std::vector<std::uint64_t> rows(global.begin(), global.end());
   w.rows_scanned = std::uint64_t(H) * std::uint64_t(std::max(1, ctx.comm().dimension()) + 1);
   return partition_.owners(rows, ctx.nodes());
@@ -31,12 +33,6 @@ MergeMeasures ActivePixelMerging::merge(NodeContext& ctx, Counters& w) {
   const std::vector<int> owner = share_scanlines(ctx, w);
   MergeMeasures m;
   exchange(ctx, owner, m, w);
-  const int r = ctx.rank();
-  std::uint64_t owned_rows = 0;
-  for (int node : owner)
-    owned_rows += node == r;
-  ctx.alloc(double(owned_rows) * width_ * double(Framebuffer::kLocationBytes),
-            "z-buffer of the owned scanlines");
   return m;
 }
 

@@ -53,6 +53,13 @@ void record_measures(NodeContext& ctx, const MergeScheme& scheme, const Framebuf
   auto& m = ctx.metrics();
   m["communication"] = {{"concurrent_volume_bytes", volume}, {"steps", steps}};
   m["load_imbalance"] = load_imbalance(merge_loads);
+  // Bytes of the records on the wire (docs/papers.md): a winning pixel (x 2, rgb 3, z 4, and
+  // zcube's triangle id 4 for the depth tie-break), a full z-buffer location (rgb, z, id), a dealt
+  // polygon with its three world vertices, a scanline count.
+  m["wire_bytes"] = {{"pixel", kWirePixelBytes},
+                     {"zbuffer_location", 11},
+                     {"triangle", sizeof(TriWorld)},
+                     {"count_entry", sizeof(std::int32_t)}};
   m["kurc"] = {{"tpg", total_tpg},
                {"tpf", img.covered()},
                {"merge_loads", merge_loads},

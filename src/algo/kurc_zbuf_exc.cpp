@@ -35,14 +35,19 @@ public:
       const int partner = r ^ (1 << i), mid = y0_ + (y1_ - y0_) / 2;
       const bool top = !(r & (1 << i));                       // keeps the upper half
       const int sy0 = top ? mid : y0_, sy1 = top ? y1_ : mid; // the half that leaves
+      // The leaving half is a contiguous band of the z-buffer, sent in place (zcube's copy of its
+      // three arrays into one payload is an artefact); the arriving half needs a buffer of its own.
       const std::size_t W = std::size_t(full_.width());
       Bytes out = full_.pack_locations(sy0 * W, (sy1 - sy0) * W);
       m.step_bytes.push_back(double(out.size()));
+      const int ky0 = top ? y0_ : mid, ky1 = top ? mid : y1_;
+      const double rx = double(Framebuffer::kLocationBytes) * double(ky1 - ky0) * double(W);
+      ctx.alloc(rx, "receive buffer");
       auto h = c.isend(partner, kTagZbuf + i, std::move(out));
       Bytes in = c.recv(partner, kTagZbuf + i);
       h->wait();
-      const int ky0 = top ? y0_ : mid, ky1 = top ? mid : y1_;
       const std::size_t n = full_.merge_locations(in, ky0 * W);
+      ctx.release(rx);
       w.merge_ops += n;
       m.merge_load += n;
       y0_ = ky0;
