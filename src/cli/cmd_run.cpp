@@ -11,6 +11,7 @@
 #include "raster/image_io.hpp"
 #include "repro/gantt_chart.hpp"
 #include "repro/paper_figures.hpp"
+#include "repro/reproduce.hpp"
 #include "repro/simulate.hpp"
 #include "run/run_flags.hpp"
 #include "scene/load.hpp"
@@ -171,7 +172,7 @@ static int cmd_run(std::vector<std::string> args) {
     seq.options = AlgorithmOptions{};
     seq.compare_with_sequential = false;
     const auto sr = run_simulation_isolated(seq);
-    if (sr.value("status", "") == "ok") seq_s = sr["virtual_time_s"].get<double>();
+    if (sr.value("status", "") == "ok") seq_s = virtual_s(sr);
   }
   SimResult r = run_simulation(cfg);
   attach_paper_figures(r.report);

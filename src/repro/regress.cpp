@@ -40,7 +40,7 @@ nlohmann::json reduce_report(const nlohmann::json& r) {
   nlohmann::json o = {{"status", r.value("status", "error")}};
   if (r.contains("error")) o["error"] = r["error"];
   for (const char* k : {"machine", "nodes", "topology", "fidelity", "algorithm", "frames",
-                        "virtual_time_s", "counters", "load_imbalance"})
+                        "virtual_time_s", "timed_s", "counters", "load_imbalance"})
     if (r.contains(k)) o[k] = r[k];
   if (r.contains("phases")) {
     o["phases"] = nlohmann::json::object();
