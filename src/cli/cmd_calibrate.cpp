@@ -30,8 +30,11 @@ static int cmd_calibrate(std::vector<std::string> args) {
   app.add_option("--max-iterations", o.max_iterations, "fixed-point steps of the iPSC/2 fit")
       ->capture_default_str();
   app.add_option("--fix", o.fixed_groups,
-                 "cost groups kept at their physical estimate (default: packing)");
+                 "cost groups kept at their physical estimate (default: the last --select choice)");
   app.add_flag("--no-crossval", no_crossval, "skip the leave-one-scene-out folds");
+  app.add_flag("--select", o.select,
+               "choose the groups kept physical by cross-validating every candidate set "
+               "(about five times longer)");
   app.add_flag("--write", write, "also rewrite src/machine/calibrated_costs.hpp (then rebuild)");
   app.add_flag("--overwrite", overwrite,
                "replace the fit.json already in --out (the committed results/calibration/)");

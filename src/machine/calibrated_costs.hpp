@@ -4,6 +4,9 @@
 // cost group in cost_groups() order, each within the plausible range of its operations.
 namespace zc::calibrated {
 inline constexpr bool kFitted = true;
+// The groups kept at their physical estimate (the fewest free parameters the cross-validation
+// supports: results/calibration/selection.csv).
+inline constexpr const char* kFixedGroups = "packing";
 inline constexpr double kGroupScale[] = {
     1.085671062337549 /* geometry */,
     1.876256658645569 /* spans */,

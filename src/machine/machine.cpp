@@ -109,7 +109,9 @@ std::vector<MachineSpec> make_specs() {
     m.net.startup_long_s = 275e-6;
     m.net.short_max_bytes = 100;
     m.net.per_byte_s = 1.0 / 2.8e6; // 2.8 MB/s channel (Nugent 1988)
-    m.net.per_hop_s = 0;            // "nearly equal performance between any pair of nodes"
+    // The same Direct-Connect Module as the iPSC/860, where Bokhari 1990 measured 10-30 us a hop;
+    // the low end, as the DCM routes the header in hardware (docs/machines.md).
+    m.net.per_hop_s = 10e-6;
     m.net.switching = Switching::Circuit;
     m.net.host_startup_s = 1e-3;  // SRM link: assumption, Ethernet-class
     m.net.host_per_byte_s = 1e-6; // ~1 MB/s: assumption

@@ -9,7 +9,9 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <tuple>
 
+#include "machine/calibrated_costs.hpp"
 #include "machine/cpu_model.hpp"
 #include "machine/machine.hpp"
 #include "machine/platform_xml.hpp"
@@ -340,9 +342,70 @@ nlohmann::json kurc_targets(const KurcFit& f) {
   return targets;
 }
 
+std::string join(const std::vector<std::string>& v) {
+  std::string out;
+  for (const auto& x : v) {
+    if (!out.empty()) out += ",";
+    out += x;
+  }
+  return out;
+}
+
+// Cross-validates every candidate set of fixed groups; returns the table and the chosen set.
+std::pair<nlohmann::json, std::vector<std::string>> select_model(const CalibrationOptions& o) {
+  nlohmann::json rows = nlohmann::json::array();
+  std::vector<std::string> best;
+  double best_err = 1e300;
+  std::size_t best_free = 0;
+  for (const auto& fixed : CalibrationOptions::candidate_fixed_groups()) {
+    CalibrationOptions c = o;
+    c.fixed_groups = fixed;
+    const nlohmann::json cv = cross_validate(c);
+    std::size_t nfree = 0;
+    for (std::size_t g = 0; g < cost_groups().size(); ++g)
+      nfree += is_fixed(g, c) ? 0 : 1;
+    const double err = cv["median_abs_rel_error"].get<double>();
+    rows.push_back({{"fixed_groups", join(fixed)},
+                    {"free_parameters", nfree},
+                    {"median_abs_rel_error", err},
+                    {"rms_rel_error", cv["rms_rel_error"]}});
+    const bool better =
+        err < best_err - 0.005 || (std::fabs(err - best_err) <= 0.005 && nfree < best_free);
+    if (best.empty() || better) {
+      best = fixed;
+      best_err = err;
+      best_free = nfree;
+    }
+  }
+  return {rows, best};
+}
+
 } // namespace
 
-nlohmann::json calibrate(const CalibrationOptions& o) {
+std::vector<std::string> CalibrationOptions::default_fixed_groups() {
+  std::vector<std::string> out;
+  std::string cur;
+  for (const char* p = calibrated::kFixedGroups;; ++p) {
+    if (*p == ',' || *p == 0) {
+      if (!cur.empty()) out.push_back(cur);
+      cur.clear();
+      if (*p == 0) break;
+    } else {
+      cur += *p;
+    }
+  }
+  return out;
+}
+
+std::vector<std::vector<std::string>> CalibrationOptions::candidate_fixed_groups() {
+  return {
+      {}, {"packing"}, {"packing", "clear"}, {"packing", "spans"}, {"packing", "spans", "clear"}};
+}
+
+nlohmann::json calibrate(const CalibrationOptions& opt) {
+  CalibrationOptions o = opt;
+  nlohmann::json selection;
+  if (o.select) std::tie(selection, o.fixed_groups) = select_model(o);
   const KurcFit f = fit_kurc(kurc_scenes(), o, "iPSC/2 fit");
   nlohmann::json fit;
   nlohmann::json groups = nlohmann::json::array(), free = nlohmann::json::array(),
@@ -370,6 +433,7 @@ nlohmann::json calibrate(const CalibrationOptions& o) {
   fit["charles"] = charles_prediction(f.k, o);
   fit["plausibility"] = plausibility(f.k);
   if (o.cross_validate) fit["crossval"] = cross_validate(o);
+  if (o.select) fit["selection"] = selection;
   fit["settings"] = {{"ridge", o.ridge},
                      {"fixed_groups", o.fixed_groups},
                      {"kurc_runs", "ipsc2, 16 nodes, cube, 400x400, circuit fidelity"},

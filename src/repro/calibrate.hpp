@@ -28,11 +28,15 @@ struct CalibrationOptions {
   // units: it settles groups the targets barely exercise.
   double ridge = 0.02;
   bool verbose = true; // progress on stderr
-  // Groups kept at their physical estimate. `packing` by default: in Table 2 only PAIR's messages
-  // gathered from several runs of scanlines pack data, too few to tell a copy rate from the
-  // merging phase's waits, so the copy rate stays the CPU's documented one.
-  std::vector<std::string> fixed_groups = {"packing"};
+  // Groups kept at their physical estimate: by default the choice of the last `--select` run
+  // (calibrated_costs.hpp kFixedGroups), the fewest free parameters the cross-validation supports.
+  std::vector<std::string> fixed_groups = default_fixed_groups();
   bool cross_validate = true; // the leave-one-scene-out folds (about 250 short simulations)
+  // Model selection: cross-validate every candidate set of fixed groups and fit with the one that
+  // predicts the held-out scenes best (ties within half a point go to fewer free parameters).
+  bool select = false;
+  static std::vector<std::string> default_fixed_groups();
+  static std::vector<std::vector<std::string>> candidate_fixed_groups();
 };
 
 // Runs the fit and its validation; returns fit.json's content: {"groups", "free_groups",

@@ -21,6 +21,18 @@ std::string calibrated_costs_header(const nlohmann::json& fit) {
     << "// cost group in cost_groups() order, each within the plausible range of its operations.\n"
     << "namespace zc::calibrated {\n"
     << "inline constexpr bool kFitted = true;\n"
+    << "// The groups kept at their physical estimate (the fewest free parameters the "
+       "cross-validation\n// supports: results/calibration/selection.csv).\n"
+    << "inline constexpr const char* kFixedGroups = \"" <<
+      [&] {
+        std::string j;
+        for (const auto& g : fit["settings"]["fixed_groups"]) {
+          if (!j.empty()) j += ",";
+          j += g.get<std::string>();
+        }
+        return j;
+      }()
+    << "\";\n"
     << "inline constexpr double kGroupScale[] = {";
   const auto& k = fit["scale"];
   for (std::size_t g = 0; g < k.size(); ++g)
@@ -74,6 +86,13 @@ void write_csvs(const nlohmann::json& fit, const std::string& dir) {
     c << r["id"].get<std::string>() << "," << r["nodes"].get<int>() << "," << num(r["paper"]) << ","
       << num(r["predicted"]) << "," << num(r["rel_error"]) << "," << num(r["predicted_physical"])
       << "," << num(r["rel_error_physical"]) << "\n";
+  if (fit.contains("selection")) {
+    std::ofstream sel(dir + "/selection.csv");
+    sel << "fixed_groups,free_parameters,median_abs_rel_error,rms_rel_error\n";
+    for (const auto& r : fit["selection"])
+      sel << "\"" << r["fixed_groups"].get<std::string>() << "\"," << r["free_parameters"] << ","
+          << num(r["median_abs_rel_error"]) << "," << num(r["rms_rel_error"]) << "\n";
+  }
   if (!fit.contains("crossval")) return;
   std::ofstream x(dir + "/crossval.csv");
   x << "fold,target,paper_ms,predicted_ms,rel_error\n";
@@ -109,9 +128,10 @@ void readme_method(std::ostream& md, const nlohmann::json& fit) {
         "on the relative errors with a weak\n   pull (weight "
      << fit["settings"]["ridge"].get<double>()
      << ") towards the physical estimate, repeated at the new costs until the multipliers\n"
-        "   settle. `packing` stays at its physical estimate: only a few PAIR messages gather "
-        "data from several\n   runs of scanlines, too few targets to separate a copy rate from "
-        "the merging phase's waits.\n"
+        "   settle. The other groups stay at their physical estimate: as few free parameters as "
+        "the data\n   support, chosen by `zcube calibrate --select` (the set whose leave-one-scene-"
+        "out prediction is best;\n   a tie within half a point goes to fewer parameters; "
+        "`selection.csv`).\n"
      << "3. **The i860 is not fitted.** The multipliers correct the operation mixes (what the "
         "compiled program\n   executes), which the 80386 and the i860 share; the i860's clocks "
         "are its own. No Charles et al. figure\n   enters the fit.\n\n";
@@ -190,6 +210,19 @@ void readme_validation(std::ostream& md, const nlohmann::json& fit) {
         "where the data would have pushed further.\n\n";
 }
 
+void readme_selection(std::ostream& md, const nlohmann::json& fit) {
+  if (!fit.contains("selection")) return;
+  md << "## How many free parameters (`selection.csv`)\n\n| groups kept physical | free "
+        "parameters | leave-one-scene-out median error | RMS |\n|---|---|---|---|\n";
+  for (const auto& r : fit["selection"])
+    md << "| "
+       << (r["fixed_groups"].get<std::string>().empty() ? "(none)"
+                                                        : r["fixed_groups"].get<std::string>())
+       << " | " << r["free_parameters"] << " | " << plain_pct(r["median_abs_rel_error"]) << " | "
+       << plain_pct(r["rms_rel_error"]) << " |\n";
+  md << "\n";
+}
+
 void readme_targets(std::ostream& md, const nlohmann::json& fit) {
   md << "## Every fitted target\n\n| target | paper | physical | fitted | error (physical) | "
         "error (fitted) |\n|---|---|---|---|---|---|\n";
@@ -210,6 +243,7 @@ void write_calibration_results(const nlohmann::json& fit, const std::string& dir
   readme_method(md, fit);
   readme_fit(md, fit);
   readme_validation(md, fit);
+  readme_selection(md, fit);
   readme_targets(md, fit);
 }
 
