@@ -9,6 +9,7 @@
 
 #include "repro/calibrate.hpp"
 #include "repro/gantt_chart.hpp"
+#include "repro/json_file.hpp"
 #include "repro/plot_script.hpp"
 #include "repro/progress.hpp"
 #include "repro/table.hpp"
@@ -193,7 +194,17 @@ int reproduce(const ReproduceOptions& o) {
     c.root = o.root;
     c.jobs = o.jobs;
     c.verbose = o.verbose;
-    write_calibration_results(calibrate(c), o.out + "/calibration");
+    nlohmann::json fit = calibrate(c);
+    // The model selection (`zcube calibrate --select`, five times longer) is not re-run here: its
+    // table is kept when it chose the groups this fit kept physical.
+    const std::string prev = o.out + "/calibration/fit.json";
+    if (std::filesystem::exists(prev)) {
+      const nlohmann::json old = read_json_file(prev, "calibration");
+      if (old.contains("selection") &&
+          old["settings"]["fixed_groups"] == fit["settings"]["fixed_groups"])
+        fit["selection"] = old["selection"];
+    }
+    write_calibration_results(fit, o.out + "/calibration");
   }
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (all) write_text(o.out + "/README.md", top_readme(o, wall, cfgs.size(), summaries, kept));
