@@ -12,7 +12,7 @@ bad() {
   echo "FAIL $*"
   fail=1
 }
-whatif=(--latency 10us --bandwidth 28MBps --cpu-scale 0.25)
+whatif=(--latency 27.5us --bandwidth 28MBps --cpu-scale 0.25)
 "$zcube" platform --machine ipsc2 --nodes 16 "${whatif[@]}" -o "$tmp/w.xml" || bad "platform -o"
 grep -q 'speed="64Mf"' "$tmp/w.xml" || bad "--cpu-scale 0.25 is not a 64 MHz clock"
 grep -q 'bw="28MBps"' "$tmp/w.xml" || bad "--bandwidth 28MBps is not the channel bandwidth"

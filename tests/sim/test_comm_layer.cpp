@@ -61,13 +61,17 @@ TEST(Units, SpeedsTheWaySimGridWritesThem) {
   EXPECT_DOUBLE_EQ(parse_bytes("8MiB"), 8.0 * 1048576);
 }
 
-TEST(PointToPoint, DcmCostIsDistanceFreeVolvoxGrowsPerHop) {
-  // iPSC/2: no per-hop term at all, so 1..5 hops cost the same to the last bit.
+TEST(PointToPoint, DcmCostGrowsByItsPerHopTermVolvoxByWholeSteps) {
+  // iPSC/2: circuit switching, so a hop adds only the DCM's per-hop set-up (docs/machines.md), the
+  // same for short and long messages.
   auto dcm =
       one_way(sim_config("ipsc2", 32, Topology::Cube, Fidelity::Circuit), "1,3,7,15,31", "64,4096");
+  const double per_hop = machine_spec("ipsc2").net.per_hop_s;
+  ASSERT_GT(per_hop, 0);
   for (double m : {64.0, 4096.0})
     for (int h = 2; h <= 5; ++h)
-      expect_rel(dcm.at({m, h}), dcm.at({m, 1}), 1e-12, "ipsc2, " + std::to_string(h) + " hops");
+      expect_rel(dcm.at({m, h}), dcm.at({m, 1}) + (h - 1) * per_hop, 1e-12,
+                 "ipsc2, " + std::to_string(h) + " hops");
   // Volvox: every hop is a whole store-and-forward step.
   auto t800 = one_way(sim_config("volvox", 32, Topology::Cube, Fidelity::Circuit), "1,3,7,15,31",
                       "64,4096");
