@@ -6,12 +6,12 @@ namespace zc::calibrated {
 inline constexpr bool kFitted = true;
 // The groups kept at their physical estimate (the fewest free parameters the cross-validation
 // supports: results/calibration/selection.csv).
-inline constexpr const char* kFixedGroups = "packing";
+inline constexpr const char* kFixedGroups = "packing,spans";
 inline constexpr double kGroupScale[] = {
-    1.085671062337549 /* geometry */,
-    1.876256658645569 /* spans */,
+    1.2384375272884993 /* geometry */,
+    1 /* spans */,
     2 /* pixels */,
-    0.7340793446976521 /* clear */,
-    1.6478473431785785 /* merge */,
+    0.7340793446976525 /* clear */,
+    1.6691680130194366 /* merge */,
     1 /* packing */};
 } // namespace zc::calibrated
