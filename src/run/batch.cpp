@@ -12,6 +12,8 @@
 #include <string>
 #include <thread>
 
+#include "util/fork_pipe.hpp"
+
 namespace zc {
 
 namespace {
@@ -121,21 +123,15 @@ std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int 
   while (next < points.size() || !running.empty()) {
     if (g_stop_signal) stop_batch(running);
     while (next < points.size() && int(running.size()) < jobs) {
-      int fds[2];
-      if (pipe(fds) != 0) throw std::runtime_error("pipe failed");
-      std::fflush(nullptr);
-      const pid_t pid = fork();
-      if (pid < 0) throw std::runtime_error("fork failed");
-      if (pid == 0) {
+      const PipedChild child = fork_with_pipe();
+      if (child.pid == 0) {
         signal(SIGINT, SIG_DFL); // the parent's handler is for the parent
         signal(SIGTERM, SIG_DFL);
-        close(fds[0]);
         for (const Child& c : running)
           close(c.fd);
-        child_main(run_point, points[next], fds[1]);
+        child_main(run_point, points[next], child.fd);
       }
-      close(fds[1]);
-      running.push_back({pid, fds[0], next, {}});
+      running.push_back({child.pid, child.fd, next, {}});
       ++next;
     }
     std::vector<pollfd> pfd;

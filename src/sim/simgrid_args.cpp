@@ -10,6 +10,7 @@
 #include <simgrid/s4u.hpp>
 
 #include "util/error.hpp"
+#include "util/fork_pipe.hpp"
 
 namespace zc {
 
@@ -57,26 +58,18 @@ void check_simgrid_args(const std::vector<std::string>& args) {
                              "<!DOCTYPE platform SYSTEM \"https://simgrid.org/simgrid.dtd\">\n"
                              "<platform version=\"4.1\"><zone id=\"z\" routing=\"Full\">"
                              "<host id=\"h\" speed=\"1Gf\"/></zone></platform>\n";
-  int fds[2];
-  if (pipe(fds) != 0) throw std::runtime_error("pipe failed");
-  std::fflush(nullptr);
-  const pid_t pid = fork();
-  if (pid < 0) throw std::runtime_error("fork failed");
-  if (pid == 0) {
-    close(fds[0]);
-    try_settings(args, platform, fds[1]);
-  }
-  close(fds[1]);
+  const PipedChild child = fork_with_pipe();
+  if (child.pid == 0) try_settings(args, platform, child.fd);
   std::string out;
   char buf[4096];
-  for (ssize_t n; (n = read(fds[0], buf, sizeof buf)) != 0;) {
+  for (ssize_t n; (n = read(child.fd, buf, sizeof buf)) != 0;) {
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) break;
     out.append(buf, std::size_t(n));
   }
-  close(fds[0]);
+  close(child.fd);
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  while (waitpid(child.pid, &status, 0) < 0 && errno == EINTR) {
   }
   std::filesystem::remove(platform);
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return;
