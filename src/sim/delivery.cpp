@@ -13,7 +13,7 @@ constexpr double kNever = -std::numeric_limits<double>::infinity();
 
 Delivery::Delivery(SimNetwork& net, Fidelity fidelity, std::vector<sg::Host*> hosts)
     : net_(net), fidelity_(fidelity), hosts_(std::move(hosts)), ranks_(net.nodes() + 1),
-      inboxes_(ranks_), waiters_(ranks_ + 1) {
+      inboxes_(std::size_t(ranks_), Inbox(ranks_)), waiters_(ranks_ + 1) {
   for (auto& w : waiters_)
     w.wakeup = sg::Semaphore::create(0);
   if (fidelity_ == Fidelity::Circuit)
@@ -51,16 +51,20 @@ void Delivery::wake(Waiter& w) {
 }
 
 void Delivery::flush_wakeups() {
+  if (to_wake_.empty()) return;
+  // Releasing yields: another actor may flush its own wake-ups meanwhile, into to_wake_.
   std::vector<simgrid::s4u::SemaphorePtr> now;
+  now.swap(waking_);
   now.swap(to_wake_);
   for (auto& s : now)
     s->release();
+  now.clear();
+  if (waking_.capacity() < now.capacity()) waking_.swap(now); // keep the larger buffer
 }
 
 void Delivery::arrived(Transit& m) {
   m.holds.clear();
   m.holds.shrink_to_fit();
-  inboxes_[m.dst].arrived(m);
   notify(waiters_[m.dst], m);
   notify(waiters_[m.src], m);
 }
@@ -131,7 +135,7 @@ void Delivery::schedule(Event e) {
 }
 
 // A release matters only to a waiter, and can be dated only once the owner holds all its channels.
-void Delivery::schedule_release(std::uint64_t id, Channel& c) {
+void Delivery::schedule_release(std::uint32_t id, Channel& c) {
   if (c.waiters.empty() || c.free_at == kNotYet || c.release_pending) return;
   c.release_pending = true;
   schedule({c.free_at, event_seq_++, nullptr, id});
@@ -162,7 +166,7 @@ void Delivery::advance(const TransitPtr& m, double t) {
   for (;;) {
     const Hold& h = m->holds[m->stage];
     while (m->next_channel < h.channels.size()) {
-      const std::uint64_t id = channel_id(h.channels[m->next_channel]);
+      const std::uint32_t id = channel_id(h.channels[m->next_channel]);
       Channel& c = channels_[id];
       const bool free = !c.owner || (c.free_at <= t && c.waiters.empty());
       if (!free) {
@@ -176,7 +180,7 @@ void Delivery::advance(const TransitPtr& m, double t) {
     }
     const double end = t + h.seconds;
     for (auto ch : h.channels) {
-      const std::uint64_t id = channel_id(ch);
+      const std::uint32_t id = channel_id(ch);
       Channel& c = channels_[id];
       c.free_at = end;
       schedule_release(id, c);
@@ -196,8 +200,20 @@ void Delivery::advance(const TransitPtr& m, double t) {
   }
 }
 
+std::uint32_t Delivery::channel_id(std::pair<int, int> c) {
+  if (channel_slot_.empty()) channel_slot_.assign(std::size_t(ranks_) * std::size_t(ranks_), ~0u);
+  std::uint32_t& slot =
+      channel_slot_[std::size_t(c.first) * std::size_t(ranks_) + std::size_t(c.second)];
+  if (slot == ~0u) {
+    slot = std::uint32_t(channels_.size());
+    channels_.emplace_back();
+  }
+  return slot;
+}
+
 void Delivery::process(const Event& e) {
-  std::vector<TransitPtr> woken;
+  std::vector<TransitPtr>& woken = woken_;
+  woken.clear();
   if (e.next_stage) {
     // Release the previous hold's channels in reverse order, continue, then the waiters go on.
     const Transit& m = *e.next_stage;

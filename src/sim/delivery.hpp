@@ -10,7 +10,6 @@
 #include <cstdint>
 #include <deque>
 #include <queue>
-#include <unordered_map>
 #include <vector>
 
 #include <simgrid/s4u.hpp>
@@ -51,7 +50,7 @@ private:
     double time;
     std::uint64_t seq;
     TransitPtr next_stage; // this message releases its previous hold and starts the next one
-    std::uint64_t channel; // else: this channel's owner releases it
+    std::uint32_t channel; // else: this channel's owner releases it
     bool operator>(const Event& o) const { return time != o.time ? time > o.time : seq > o.seq; }
   };
 
@@ -60,13 +59,13 @@ private:
   void wake(Waiter& w);
   void flush_wakeups();
   void arrived(Transit& m);
-  std::uint64_t channel_id(std::pair<int, int> c) const {
-    return std::uint64_t(c.first) * std::uint64_t(ranks_) + std::uint64_t(c.second);
-  }
+  // The channel from c.first to c.second, created on first use (a dense index by (from, to)
+  // instead of a hash map: every hold looks its channels up).
+  std::uint32_t channel_id(std::pair<int, int> c);
   // Circuit fidelity.
   void advance(const TransitPtr& m, double t);
   void schedule(Event e);
-  void schedule_release(std::uint64_t id, Channel& c);
+  void schedule_release(std::uint32_t id, Channel& c);
   void hand_over(Channel& c, std::vector<TransitPtr>& woken);
   void process(const Event& e);
   void network_loop();
@@ -76,11 +75,13 @@ private:
   std::vector<simgrid::s4u::Host*> hosts_;
   int ranks_;
   std::vector<Inbox> inboxes_;
-  std::vector<Waiter> waiters_; // ranks, then the network actor
-  std::unordered_map<std::uint64_t, Channel> channels_;
+  std::vector<Waiter> waiters_;             // ranks, then the network actor
+  std::vector<std::uint32_t> channel_slot_; // from * ranks + to -> index into channels_
+  std::vector<Channel> channels_;
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> events_;
   std::uint64_t event_seq_ = 0;
-  std::vector<simgrid::s4u::SemaphorePtr> to_wake_;
+  std::vector<simgrid::s4u::SemaphorePtr> to_wake_, waking_;
+  std::vector<TransitPtr> woken_; // scratch of process()
 };
 
 } // namespace zc

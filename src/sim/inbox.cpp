@@ -1,54 +1,75 @@
 #include "sim/inbox.hpp"
 
+#include <stdexcept>
+
 namespace zc {
 
 void Inbox::push(TransitPtr m) {
-  auto& q = queues_[key(m->src, m->tag)];
-  if (q.empty()) heads_[m->tag].insert({m->arrival, m->src});
+  const int s = m->src;
+  if (s < 0 || std::size_t(s) >= by_source_.size())
+    throw std::out_of_range("inbox: source rank " + std::to_string(s));
+  auto& q = by_source_[std::size_t(s)];
+  if (q.empty()) {
+    slot_[std::size_t(s)] = int(pending_sources_.size());
+    pending_sources_.push_back(s);
+  }
   q.push_back(std::move(m));
 }
 
-void Inbox::arrived(const Transit& m) {
-  auto it = queues_.find(key(m.src, m.tag));
-  if (it == queues_.end() || it->second.front().get() != &m) return; // not at the head yet
-  auto& h = heads_[m.tag];
-  h.erase({kNotYet, m.src});
-  h.insert({m.arrival, m.src});
+int Inbox::oldest(int src, int tag) const {
+  const auto& q = by_source_[std::size_t(src)];
+  for (std::size_t i = 0; i < q.size(); ++i)
+    if (q[i]->tag == tag) return int(i);
+  return -1;
 }
 
-TransitPtr Inbox::pop(std::deque<TransitPtr>& q, std::uint64_t k) {
-  TransitPtr m = std::move(q.front());
-  q.pop_front();
-  auto& h = heads_[m->tag];
-  h.erase({m->arrival, m->src});
-  if (!q.empty())
-    h.insert({q.front()->arrival, m->src});
-  else
-    queues_.erase(k);
-  if (h.empty()) heads_.erase(m->tag);
+TransitPtr Inbox::remove(int src, int index) {
+  auto& q = by_source_[std::size_t(src)];
+  TransitPtr m = std::move(q[std::size_t(index)]);
+  q.erase(q.begin() + index);
+  if (q.empty()) { // swap-remove the source from the pending list
+    const int at = slot_[std::size_t(src)];
+    const int last = pending_sources_.back();
+    pending_sources_[std::size_t(at)] = last;
+    slot_[std::size_t(last)] = at;
+    pending_sources_.pop_back();
+    slot_[std::size_t(src)] = -1;
+  }
   return m;
 }
 
 TransitPtr Inbox::take(int src, int tag, double now, double& wake) {
   wake = kNotYet;
   if (src == kAnySource) {
-    auto h = heads_.find(tag);
-    if (h == heads_.end()) return nullptr;
-    const auto [arrival, first] = *h->second.begin();
-    if (arrival > now) {
-      wake = arrival;
+    // The earliest-arrived among the sources' oldest messages with this tag (lower source on a
+    // tie); a head whose arrival is still unknown cannot be taken and dates nothing.
+    int best = -1, best_index = -1;
+    double best_arrival = kNotYet;
+    for (int s : pending_sources_) {
+      const int i = oldest(s, tag);
+      if (i < 0) continue;
+      const double a = by_source_[std::size_t(s)][std::size_t(i)]->arrival;
+      if (best < 0 || a < best_arrival || (a == best_arrival && s < best)) {
+        best = s;
+        best_index = i;
+        best_arrival = a;
+      }
+    }
+    if (best < 0) return nullptr;
+    if (best_arrival > now) {
+      wake = best_arrival;
       return nullptr;
     }
-    src = first;
+    return remove(best, best_index);
   }
-  const std::uint64_t k = key(src, tag);
-  auto it = queues_.find(k);
-  if (it == queues_.end()) return nullptr;
-  if (it->second.front()->arrival > now) {
-    wake = it->second.front()->arrival;
+  const int i = oldest(src, tag);
+  if (i < 0) return nullptr;
+  const double a = by_source_[std::size_t(src)][std::size_t(i)]->arrival;
+  if (a > now) {
+    wake = a;
     return nullptr;
   }
-  return pop(it->second, k);
+  return remove(src, i);
 }
 
 } // namespace zc

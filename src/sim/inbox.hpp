@@ -1,13 +1,15 @@
 #pragma once
-// The messages addressed to one rank and not yet received, indexed by (source, tag). Messages of
-// one (source, tag) are taken in the order they were sent, each no earlier than its arrival (so a
-// message never overtakes an earlier one of its source and tag). A receive from any source takes,
-// among the sources' oldest messages with that tag, the one that arrived first (the lower source
-// rank on a tie): the order in which a real node's buffer would have filled.
+// The messages addressed to one rank and not yet received. Messages of one (source, tag) are taken
+// in the order they were sent, each no earlier than its arrival (so a message never overtakes an
+// earlier one of its source and tag). A receive from any source takes, among the sources' oldest
+// messages with that tag, the one that arrived first (the lower source rank on a tie): the order in
+// which a real node's buffer would have filled.
+//
+// Kept per source, in send order: a node rarely has more than a few messages of one source
+// pending, so a short scan beats any index (no allocation per message once a source's list has
+// grown). Any-source receives scan only the sources with something pending.
 #include <cstdint>
-#include <deque>
-#include <set>
-#include <unordered_map>
+#include <vector>
 
 #include "sim/transit.hpp"
 
@@ -15,22 +17,22 @@ namespace zc {
 
 class Inbox {
 public:
-  // In the order of sending (arrival may be kNotYet and be set later through arrived()).
+  explicit Inbox(int sources = 0) : by_source_(std::size_t(sources)), slot_(sources, -1) {}
+
+  // In the order of sending (arrival may be kNotYet and be set later).
   void push(TransitPtr m);
-  // m's arrival time, kNotYet until now, has been set.
-  void arrived(const Transit& m);
   // The message recv(src, tag) takes at time `now` (src may be kAnySource), or null; then `wake`
   // is the earliest arrival that could change the answer (kNotYet if none is known).
   TransitPtr take(int src, int tag, double now, double& wake);
 
 private:
-  static std::uint64_t key(int src, int tag) {
-    return std::uint64_t(std::uint32_t(src)) << 32 | std::uint32_t(tag);
-  }
-  TransitPtr pop(std::deque<TransitPtr>& q, std::uint64_t k);
+  // The oldest pending message of (src, tag), or -1.
+  int oldest(int src, int tag) const;
+  TransitPtr remove(int src, int index);
 
-  std::unordered_map<std::uint64_t, std::deque<TransitPtr>> queues_; // (src, tag) -> in send order
-  std::unordered_map<int, std::set<std::pair<double, int>>> heads_;  // tag -> {(arrival, src)}
+  std::vector<std::vector<TransitPtr>> by_source_; // source -> pending, in send order
+  std::vector<int> pending_sources_;               // sources whose list is not empty
+  std::vector<int> slot_;                          // source -> its index in pending_sources_, or -1
 };
 
 } // namespace zc
