@@ -27,13 +27,14 @@ protected:
       owned_rows += node == r;
     ctx.alloc(double(owned_rows) * width_ * double(Framebuffer::kLocationBytes),
               "z-buffer of the owned scanlines");
-    std::vector<Bytes> out(P);
+    std::vector<Bytes> out = serialize_sparse_by_owner(wpa_, owner, P);
+    std::vector<int> runs(std::size_t(P), 0); // runs of owned scanlines per destination
+    for (int y = 0; y < H; ++y)
+      if (owner[y] >= 0 && owner[y] < P)
+        runs[std::size_t(owner[y])] += y == 0 || owner[y - 1] != owner[y];
     double gathered = 0; // send buffers gathered from several runs of scanlines (copies)
-    for (int k = 0; k < P; ++k) {
-      const auto owned_by_k = [&](int y) { return owner[y] == k; };
-      out[k] = serialize_sparse(select_rows(wpa_, owned_by_k));
-      if (k != r && fragmented(H, owned_by_k)) gathered += double(out[k].size());
-    }
+    for (int k = 0; k < P; ++k)
+      if (k != r && runs[std::size_t(k)] > 1) gathered += double(out[k].size());
     w.bytes_packed += std::uint64_t(gathered);
     ctx.alloc(gathered, "send buffers");
     // Step k of the schedule exchanges with node r ^ k.
@@ -46,17 +47,17 @@ protected:
       if (k != r) received += double(in[k].size());
     ctx.alloc(received, "receive buffers");
     ctx.release(gathered);
-    mine_ = deserialize_sparse(in[r].data(), in[r].size(), width_, 0, H);
-    const std::uint64_t local_pixels = mine_.count();
+    // The local pixels first, then every other node's in rank order, merged into the owned rows.
+    std::vector<const Bytes*> order{&in[r]};
+    for (int k = 0; k < P; ++k)
+      if (k != r) order.push_back(&in[k]);
+    std::vector<std::uint64_t> counts;
+    mine_ = merge_sparse(order, width_, 0, H, counts);
+    const std::uint64_t local_pixels = counts[0];
     std::uint64_t received_pixels = 0;
-    for (int k = 0; k < P; ++k) {
-      if (k == r) continue;
-      ActivePixels got = deserialize_sparse(in[k].data(), in[k].size(), width_, 0, H);
-      m.merge_load += got.count();
-      received_pixels += got.count();
-      Counters list_merge; // zcube merges sorted lists; the node's work is §3.2's, charged below
-      mine_ = merge_active(mine_, got, list_merge);
-    }
+    for (std::size_t i = 1; i < counts.size(); ++i)
+      received_pixels += counts[i];
+    m.merge_load += received_pixels;
     // §3.2: "Local pixels are scattered onto the z-buffer without any distance comparisons. Then,
     // each received pixel's z value is compared with the z value in the pixel location": one
     // operation a local pixel and one a received pixel, whatever the number of senders.

@@ -16,7 +16,11 @@ struct Block {
 };
 
 Bytes pack_blocks(const std::vector<Block>& blocks) {
+  std::size_t total = 4 + 12 * blocks.size(); // sized once: one allocation, no zero-fill
+  for (const auto& k : blocks)
+    total += k.data.size();
   Bytes b;
+  b.reserve(total);
   const std::uint32_t n = std::uint32_t(blocks.size());
   append(b, &n, 1);
   for (const auto& k : blocks) {
@@ -26,7 +30,7 @@ Bytes pack_blocks(const std::vector<Block>& blocks) {
     append(b, &s, 1);
   }
   for (const auto& k : blocks)
-    append(b, k.data.data(), k.data.size());
+    b.insert(b.end(), k.data.begin(), k.data.end());
   return b;
 }
 

@@ -85,6 +85,25 @@ ActivePixels zbuffer_spans(const SpanLists& L, const TriangleBatch& batch, const
   return A;
 }
 
+namespace {
+// One row of merge_active: two x-sorted lists, the nearer pixel (depth, then lower id) winning at
+// equal x.
+void merge_row(const WinningPixel* a, const WinningPixel* ae, const WinningPixel* b,
+               const WinningPixel* be, std::vector<WinningPixel>& out) {
+  while (a < ae || b < be) {
+    if (b == be || (a < ae && a->x < b->x)) {
+      out.push_back(*a++);
+    } else if (a == ae || b->x < a->x) {
+      out.push_back(*b++);
+    } else {
+      out.push_back(in_front(b->z, b->id, a->z, a->id) ? *b : *a);
+      ++a;
+      ++b;
+    }
+  }
+}
+} // namespace
+
 ActivePixels merge_active(const ActivePixels& a, const ActivePixels& b, Counters& c) {
   if (a.y0 != b.y0 || a.y1 != b.y1 || a.width != b.width)
     throw std::logic_error("merge_active: pixel sets cover different rows");
@@ -95,22 +114,10 @@ ActivePixels merge_active(const ActivePixels& a, const ActivePixels& b, Counters
   r.row_begin.assign(a.row_begin.size(), 0);
   r.pixels.reserve(a.pixels.size() + b.pixels.size());
   for (int y = a.y0; y < a.y1; ++y) {
-    std::uint32_t i = a.row_begin[y - a.y0], ie = a.row_begin[y - a.y0 + 1];
-    std::uint32_t j = b.row_begin[y - b.y0], je = b.row_begin[y - b.y0 + 1];
-    while (i < ie || j < je) {
-      if (j == je || (i < ie && a.pixels[i].x < b.pixels[j].x)) {
-        r.pixels.push_back(a.pixels[i++]);
-      } else if (i == ie || b.pixels[j].x < a.pixels[i].x) {
-        r.pixels.push_back(b.pixels[j++]);
-      } else {
-        const WinningPixel& p = a.pixels[i];
-        const WinningPixel& q = b.pixels[j];
-        r.pixels.push_back(in_front(q.z, q.id, p.z, p.id) ? q : p);
-        ++i;
-        ++j;
-      }
-    }
-    r.row_begin[y - a.y0 + 1] = std::uint32_t(r.pixels.size());
+    const std::size_t k = std::size_t(y - a.y0);
+    merge_row(a.pixels.data() + a.row_begin[k], a.pixels.data() + a.row_begin[k + 1],
+              b.pixels.data() + b.row_begin[k], b.pixels.data() + b.row_begin[k + 1], r.pixels);
+    r.row_begin[k + 1] = std::uint32_t(r.pixels.size());
   }
   c.merge_ops += a.pixels.size() + b.pixels.size();
   return r;
@@ -202,6 +209,99 @@ ActivePixels deserialize_sparse(const std::uint8_t* p, std::size_t size, int wid
   for (auto& px : a.pixels)
     px = get_pixel(p, end);
   return a;
+}
+
+} // namespace zc
+
+namespace zc {
+
+std::vector<std::vector<std::uint8_t>>
+serialize_sparse_by_owner(const ActivePixels& a, const std::vector<int>& owner, int parts) {
+  std::vector<std::uint32_t> rows(std::size_t(parts), 0);
+  std::vector<std::size_t> pixels(std::size_t(parts), 0);
+  const auto dest = [&](int y) { // rows owned by no destination are not sent (as select_rows)
+    const int k = owner[std::size_t(y)];
+    return k >= 0 && k < parts ? k : -1;
+  };
+  for (int y = a.y0; y < a.y1; ++y)
+    if (const std::uint32_t n = a.row_count(y); n && dest(y) >= 0) {
+      ++rows[std::size_t(dest(y))];
+      pixels[std::size_t(dest(y))] += n;
+    }
+  const std::size_t n_parts = std::size_t(parts);
+  std::vector<std::vector<std::uint8_t>> out(n_parts);
+  std::vector<std::size_t> head(n_parts, 4), body(n_parts);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    out[k].resize(4 + 8 * std::size_t(rows[k]) + kWirePixelBytes * pixels[k]);
+    std::size_t at = 0;
+    put(out[k], at, rows[k]);
+    body[k] = 4 + 8 * std::size_t(rows[k]);
+  }
+  for (int y = a.y0; y < a.y1; ++y) {
+    const std::uint32_t n = a.row_count(y);
+    if (!n || dest(y) < 0) continue;
+    const std::size_t k = std::size_t(dest(y));
+    put(out[k], head[k], std::uint32_t(y));
+    put(out[k], head[k], n);
+    for (std::uint32_t i = a.row_begin[std::size_t(y - a.y0)];
+         i < a.row_begin[std::size_t(y - a.y0) + 1]; ++i)
+      put_pixel(out[k], body[k], a.pixels[i]);
+  }
+  return out;
+}
+
+ActivePixels merge_sparse(const std::vector<const std::vector<std::uint8_t>*>& messages, int width,
+                          int y0, int y1, std::vector<std::uint64_t>& pixel_counts) {
+  struct Segment {
+    int y;
+    std::vector<WinningPixel> pixels;
+  };
+  std::vector<Segment> segments; // message by message, rows increasing within a message
+  pixel_counts.assign(messages.size(), 0);
+  for (std::size_t i = 0; i < messages.size(); ++i) {
+    const std::uint8_t* p = messages[i]->data();
+    const std::uint8_t* end = p + messages[i]->size();
+    const std::uint32_t rows = get<std::uint32_t>(p, end);
+    const std::size_t first = segments.size();
+    int last = y0 - 1;
+    for (std::uint32_t r = 0; r < rows; ++r) {
+      const int y = int(get<std::uint32_t>(p, end));
+      if (y < y0 || y >= y1 || y <= last) throw std::runtime_error("active pixels: bad row");
+      segments.push_back({y, std::vector<WinningPixel>(get<std::uint32_t>(p, end))});
+      last = y;
+    }
+    for (std::size_t s = first; s < segments.size(); ++s) {
+      for (auto& px : segments[s].pixels)
+        px = get_pixel(p, end);
+      pixel_counts[i] += segments[s].pixels.size();
+    }
+  }
+  // Rows in order, each row's messages in the order given (a stable sort keeps it).
+  std::stable_sort(segments.begin(), segments.end(),
+                   [](const Segment& a, const Segment& b) { return a.y < b.y; });
+  ActivePixels r;
+  r.width = width;
+  r.y0 = y0;
+  r.y1 = y1;
+  r.row_begin.assign(std::size_t(y1 - y0) + 1, 0);
+  std::vector<WinningPixel> row, merged;
+  int next = y0; // rows before `next` have their row_begin set
+  for (std::size_t s = 0; s < segments.size();) {
+    const int y = segments[s].y;
+    row.clear();
+    for (; s < segments.size() && segments[s].y == y; ++s) {
+      merged.clear();
+      const auto& seg = segments[s].pixels;
+      merge_row(row.data(), row.data() + row.size(), seg.data(), seg.data() + seg.size(), merged);
+      row.swap(merged);
+    }
+    for (; next <= y; ++next)
+      r.row_begin[std::size_t(next - y0)] = std::uint32_t(r.pixels.size());
+    r.pixels.insert(r.pixels.end(), row.begin(), row.end());
+  }
+  for (; next <= y1; ++next)
+    r.row_begin[std::size_t(next - y0)] = std::uint32_t(r.pixels.size());
+  return r;
 }
 
 } // namespace zc

@@ -89,6 +89,17 @@ std::vector<std::uint8_t> serialize_sparse(const ActivePixels& a);
 ActivePixels deserialize_sparse(const std::uint8_t* data, std::size_t size, int width, int y0,
                                 int y1);
 
+// serialize_sparse(select_rows(a, owner[y] == k)) for every k in [0, parts), in one pass over the
+// rows: an all-to-all's messages without a scan of every row per destination.
+std::vector<std::vector<std::uint8_t>>
+serialize_sparse_by_owner(const ActivePixels& a, const std::vector<int>& owner, int parts);
+
+// The pixel set that deserializing each sparse message over rows [y0, y1) and merging them one
+// after the other with merge_active (messages[0] first) gives, in time proportional to their rows
+// and pixels instead of messages x (y1 - y0). pixel_counts[i] is messages[i]'s pixel count.
+ActivePixels merge_sparse(const std::vector<const std::vector<std::uint8_t>*>& messages, int width,
+                          int y0, int y1, std::vector<std::uint64_t>& pixel_counts);
+
 // Writes a pixel set into a frame buffer holding (at least) its rows, without comparisons.
 void scatter_active(const ActivePixels& a, Framebuffer& fb);
 

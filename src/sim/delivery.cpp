@@ -101,10 +101,23 @@ TransitPtr Delivery::post(int src, int dst, int tag, Bytes data) {
   return m;
 }
 
+// A known arrival that nothing can bring forward is waited for by sleeping until it: cheaper than
+// a timed wait on the semaphore, and nobody needs to wake this rank (it is not marked blocked).
+// As with block(), the deadline itself counts as reached.
+double Delivery::sleep_until(double deadline) {
+  const double d = deadline - sg::Engine::get_clock();
+  if (d > 0) sg::this_actor::sleep_for(d);
+  return deadline;
+}
+
 void Delivery::await_arrival(int self, const Transit& m) {
   Waiter& w = waiters_[self];
   double reached = kNever;
   while (!(m.arrival <= std::max(sg::Engine::get_clock(), reached))) {
+    if (m.arrival != kNotYet) { // set once: only contention (circuit, flow) leaves it open
+      reached = sleep_until(m.arrival);
+      continue;
+    }
     w.send = &m;
     reached = block(w, m.arrival);
     w.send = nullptr;
@@ -118,6 +131,13 @@ TransitPtr Delivery::receive(int self, int src, int tag) {
     double wake = kNotYet;
     if (auto m = inboxes_[self].take(src, tag, std::max(sg::Engine::get_clock(), reached), wake))
       return m;
+    // From one source, the oldest message of its tag is the one to take (nothing sent later
+    // overtakes it): once its arrival is known, sleep until it. From any source, another message
+    // may still arrive first.
+    if (src != kAnySource && wake != kNotYet) {
+      reached = sleep_until(wake);
+      continue;
+    }
     w.receiving = true;
     w.src = src;
     w.tag = tag;

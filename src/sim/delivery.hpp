@@ -55,6 +55,7 @@ private:
   };
 
   double block(Waiter& w, double deadline); // returns the deadline if reached, else -inf
+  double sleep_until(double deadline);      // returns the deadline
   void notify(Waiter& w, const Transit& m);
   void wake(Waiter& w);
   void flush_wakeups();

@@ -136,3 +136,54 @@ TEST(ActivePixels, WireFormatRoundTrips) {
   }
   EXPECT_THROW(deserialize_sparse(bytes.data(), bytes.size() - 1, 64, 0, 48), std::runtime_error);
 }
+
+// The all-to-all's shortcuts (one pass for every destination's message, one merge of many
+// messages) give exactly the bytes and pixels of the row-by-row originals.
+TEST(ActivePixels, ByOwnerMessagesAndManyWayMergeEqualTheOriginals) {
+  Scene s = random_scene(11, 96, 64);
+  NodeRenderer nr(s);
+  Counters c;
+  constexpr int kNodes = 5;
+  std::vector<int> owner(64);
+  for (int y = 0; y < 64; ++y)
+    owner[std::size_t(y)] = (y / 3 + y % 2) % kNodes; // fragmented, as an HBP partition can be
+  std::vector<std::vector<std::vector<std::uint8_t>>> sent; // [node][destination]
+  for (int k = 0; k < kNodes; ++k) {
+    TriangleBatch b = setup_range(s, nr, std::size_t(k), s.triangles.size(), kNodes);
+    ActivePixels a = zbuffer_spans(build_span_lists(b, 96, 64, c), b, nr.shade(), 96, c);
+    sent.push_back(serialize_sparse_by_owner(a, owner, kNodes));
+    ASSERT_EQ(sent.back().size(), std::size_t(kNodes));
+    for (int d = 0; d < kNodes; ++d)
+      EXPECT_EQ(sent.back()[std::size_t(d)], serialize_sparse(select_rows(a, [&](int y) {
+                  return owner[std::size_t(y)] == d;
+                })));
+  }
+  std::size_t nonempty = 0;
+  for (int d = 0; d < kNodes; ++d) {
+    std::vector<const std::vector<std::uint8_t>*> in;
+    ActivePixels expected;
+    for (int k = 0; k < kNodes; ++k) {
+      const auto& m = sent[std::size_t(k)][std::size_t(d)];
+      in.push_back(&m);
+      ActivePixels got = deserialize_sparse(m.data(), m.size(), 96, 0, 64);
+      expected = k == 0 ? got : merge_active(expected, got, c);
+    }
+    std::vector<std::uint64_t> counts;
+    ActivePixels merged = merge_sparse(in, 96, 0, 64, counts);
+    ASSERT_EQ(counts.size(), std::size_t(kNodes));
+    EXPECT_EQ(merged.row_begin, expected.row_begin);
+    ASSERT_EQ(merged.count(), expected.count());
+    nonempty += merged.count() > 0;
+    for (std::size_t i = 0; i < merged.count(); ++i) {
+      const WinningPixel &p = merged.pixels[i], &q = expected.pixels[i];
+      EXPECT_TRUE(p.x == q.x && p.z == q.z && p.id == q.id && std::memcmp(p.rgb, q.rgb, 3) == 0);
+    }
+  }
+  EXPECT_GT(nonempty, 1u);
+  auto bad = sent[0][std::size_t(owner[0])]; // holds row 0's pixels at least
+  ASSERT_GT(bad.size(), 12u);
+  bad.pop_back();
+  std::vector<const std::vector<std::uint8_t>*> truncated{&bad};
+  std::vector<std::uint64_t> counts;
+  EXPECT_THROW(merge_sparse(truncated, 96, 0, 64, counts), std::runtime_error);
+}
