@@ -148,7 +148,8 @@ std::vector<MachineSpec> make_specs() {
     m.net.startup_short_s = 50e-6;       // assumption (MACHINES.md): software overhead per hop
     m.net.startup_long_s = 50e-6;
     m.net.short_max_bytes = 100;
-    m.net.per_byte_s = 1.0 / 1.7e6; // T800 link, ~1.7 MB/s achieved
+    m.net.per_byte_s = 1.0 / 1.7e6; // T800 link, ~1.7 MB/s achieved one way
+    m.net.both_ways_Bps = 2.35e6;   // T800 link, both directions busy: 2.35 MB/s in all
     m.net.per_hop_s = 0;            // the per-hop cost is the whole store-and-forward step
     m.net.switching = Switching::StoreAndForward;
     m.net.host_startup_s = 1e-3;

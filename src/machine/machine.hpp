@@ -27,7 +27,7 @@ struct CostTable {
 
 enum class Switching { Circuit, StoreAndForward };
 
-// One message of m bytes over h hops, without contention:
+// One message of m bytes over h hops, without contention and with the reverse directions idle:
 //   circuit (DCM):        startup(m) + m*per_byte + (h-1)*per_hop
 //   store-and-forward:    h * (startup(m) + m*per_byte)
 // startup(m) = startup_short for m <= short_max_bytes, startup_long above (two protocols).
@@ -40,6 +40,18 @@ struct NetworkParams {
   Switching switching = Switching::Circuit;
   double host_startup_s = 0; // host (SRM) link to node 0
   double host_per_byte_s = 0;
+  // Bytes a second a node-to-node link carries in all while both its directions carry data; 0: full
+  // duplex, each direction at 1/per_byte_s whatever the other does (the DCM). A T800 link carries
+  // 1.7 MB/s one way but 2.35 MB/s in all both ways (docs/machines.md): each direction then moves
+  // half of it.
+  double both_ways_Bps = 0;
+
+  // True when a direction slows down while the other direction of its link also carries data.
+  bool half_duplex_limited() const {
+    return both_ways_Bps > 0 && per_byte_s > 0 && both_ways_Bps * per_byte_s < 2.0;
+  }
+  // Seconds a byte takes in one direction while the other direction is busy too.
+  double both_busy_per_byte_s() const { return 2.0 / both_ways_Bps; }
 
   double startup(double bytes) const {
     return bytes <= short_max_bytes ? startup_short_s : startup_long_s;

@@ -1,10 +1,12 @@
 #include "machine/platform_xml.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
 #include <initializer_list>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -83,7 +85,44 @@ std::string seconds(double s) {
   return with_unit(s, "s", {{1, ""}, {1e-3, "m"}, {1e-6, "u"}, {1e-9, "n"}});
 }
 
+// The nodes as a zone of their own with one link per direction of each channel and, under each
+// pair of directions, a shared link of the two-way total (the T800's 2.35 MB/s both ways busy,
+// docs/machines.md): SimGrid's flow model then gives each direction its one-way rate alone and half
+// the total with both busy. A TORUS cluster has no such link, so the routes are written out: one
+// per neighbour, the rest found by Dijkstra (shortest paths: the topology's hop counts).
+void duplex_nodes_zone(std::ostringstream& x, const std::string& id, const NetworkParams& n,
+                       const std::string& speed, int nodes, Topology topo) {
+  x << "    <zone id=\"" << id << "\" routing=\"DijkstraCache\">\n";
+  for (int r = 0; r < nodes; ++r)
+    x << "      <host id=\"" << node_host_name(r) << "\" speed=\"" << speed << "\"/>\n";
+  std::set<std::pair<int, int>> pairs;
+  for (int a = 0; a < nodes; ++a)
+    for (int k = 0; k < channel_count(topo, nodes); ++k)
+      if (const int b = neighbour(topo, nodes, a, k); a < b) pairs.insert({a, b});
+  const std::string lat = seconds(n.per_hop_s);
+  auto link = [&](const std::string& name, const std::string& bw, const std::string& latency) {
+    x << "      <link id=\"" << name << "\" bandwidth=\"" << bw << "\" latency=\"" << latency
+      << "\"/>\n";
+  };
+  auto channel = [](int a, int b) { return "ch-" + std::to_string(a) + "-" + std::to_string(b); };
+  for (auto [a, b] : pairs) {
+    link(channel(a, b), rate(n.per_byte_s), lat);
+    link(channel(b, a), rate(n.per_byte_s), lat);
+    link(duplex_link_name(a, b), rate(1.0 / n.both_ways_Bps), "0s");
+  }
+  for (auto [a, b] : pairs)
+    for (auto [from, to] : {std::pair{a, b}, std::pair{b, a}})
+      x << "      <route src=\"" << node_host_name(from) << "\" dst=\"" << node_host_name(to)
+        << "\" symmetrical=\"NO\"><link_ctn id=\"" << channel(from, to) << "\"/><link_ctn id=\""
+        << duplex_link_name(a, b) << "\"/></route>\n";
+  x << "    </zone>\n";
+}
+
 } // namespace
+
+std::string duplex_link_name(int a, int b) {
+  return kDuplexLinkPrefix + std::to_string(std::min(a, b)) + "-" + std::to_string(std::max(a, b));
+}
 
 std::string platform_xml(const MachineSpec& spec, int nodes, Topology topo,
                          const PlatformEdits& edits) {
@@ -126,11 +165,14 @@ std::string platform_xml(const MachineSpec& spec, int nodes, Topology topo,
   CostTable cost = spec.cost;
   for (auto& [id, v] : cost.fields()) // "cost_<field>" -> "zcube.cycles.<field>"
     prop("zcube.cycles." + id.substr(5), format_double(*v * clock));
-  x << "    <cluster id=\"" << zone << "-nodes\" topology=\"TORUS\" topo_parameters=\""
-    << torus_dimensions(topo, nodes) << "\" prefix=\"node\" radical=\"0-" << nodes - 1
-    << "\" suffix=\"\" speed=\"" << speed << "\" bw=\"" << rate(n.per_byte_s) << "\" lat=\""
-    << seconds(n.per_hop_s) << "\" sharing_policy=\"SPLITDUPLEX\"/>\n"
-    << "    <zone id=\"" << zone << "-host\" routing=\"None\">\n"
+  if (n.half_duplex_limited())
+    duplex_nodes_zone(x, zone + "-nodes", n, speed, nodes, topo);
+  else
+    x << "    <cluster id=\"" << zone << "-nodes\" topology=\"TORUS\" topo_parameters=\""
+      << torus_dimensions(topo, nodes) << "\" prefix=\"node\" radical=\"0-" << nodes - 1
+      << "\" suffix=\"\" speed=\"" << speed << "\" bw=\"" << rate(n.per_byte_s) << "\" lat=\""
+      << seconds(n.per_hop_s) << "\" sharing_policy=\"SPLITDUPLEX\"/>\n";
+  x << "    <zone id=\"" << zone << "-host\" routing=\"None\">\n"
     << "      <host id=\"" << kHostComputerName << "\" speed=\"" << speed << "\"/>\n"
     << "    </zone>\n";
   for (const char* l : {kHostUpLink, kHostDownLink})

@@ -5,7 +5,10 @@
 // srm is a zone of its own linked to node0 by host-up/host-down. SimGrid reads every figure it
 // can use: channel bandwidth and latency (the cluster's bw and lat), the CPU clock (host speed),
 // the message start-up as SMPI's receive overhead (<config> smpi/or, piecewise by size: the two
-// protocols) and the host link's bandwidth and latency. What SimGrid has no notion of is a zcube.*
+// protocols) and the host link's bandwidth and latency. Links whose two directions carry less than
+// twice the one-way rate in all (the Volvox's T800s) are written out instead of a cluster: a link
+// per direction and a shared duplex-a-b link of the two-way total under both (docs/machines.md).
+// What SimGrid has no notion of is a zcube.*
 // property of the machine zone, stated once: switching, node memory, cycles per counted operation.
 #include <string>
 
@@ -37,6 +40,10 @@ std::string node_host_name(int rank);
 constexpr const char* kHostComputerName = "srm";
 constexpr const char* kHostUpLink = "host-up";
 constexpr const char* kHostDownLink = "host-down";
+// On machines whose links carry less than twice the one-way rate both ways busy (the Volvox), the
+// shared link of the two-way total under the two directions of the channel between nodes a and b.
+constexpr const char* kDuplexLinkPrefix = "duplex-";
+std::string duplex_link_name(int a, int b);
 constexpr const char* kStartupConfig = "smpi/or";
 // SMPI charges smpi/or only on eager (detached) sends, below this size: every message, here.
 constexpr const char* kEagerConfig = "smpi/send-is-detached-thresh";

@@ -13,10 +13,13 @@ constexpr double kNever = -std::numeric_limits<double>::infinity();
 
 Delivery::Delivery(SimNetwork& net, Fidelity fidelity, std::vector<sg::Host*> hosts)
     : net_(net), fidelity_(fidelity), hosts_(std::move(hosts)), ranks_(net.nodes() + 1),
-      inboxes_(std::size_t(ranks_), Inbox(ranks_)), waiters_(ranks_ + 1) {
+      inboxes_(std::size_t(ranks_), Inbox(ranks_)), waiters_(ranks_ + 1),
+      events_driven_(fidelity == Fidelity::Circuit ||
+                     (fidelity == Fidelity::Analytic && net.params().half_duplex_limited())),
+      duplex_(net.params()) {
   for (auto& w : waiters_)
     w.wakeup = sg::Semaphore::create(0);
-  if (fidelity_ == Fidelity::Circuit)
+  if (events_driven_)
     sg::Actor::create("network", hosts_.back(), [this] { network_loop(); })->daemonize();
 }
 
@@ -77,14 +80,14 @@ TransitPtr Delivery::post(int src, int dst, int tag, Bytes data) {
   m->data = std::move(data);
   m->sent_at = sg::Engine::get_clock();
   const double bytes = double(m->data.size());
-  if (fidelity_ == Fidelity::Analytic) {
+  if (fidelity_ == Fidelity::Analytic && !events_driven_) {
     double t = m->sent_at;
     for (const Hold& h : net_.holds(src, dst, bytes))
       t += h.seconds;
     m->arrival = t;
     inboxes_[dst].push(m);
     notify(waiters_[dst], *m);
-  } else if (fidelity_ == Fidelity::Circuit) {
+  } else if (events_driven_) {
     m->holds = net_.holds(src, dst, bytes);
     inboxes_[dst].push(m);
     advance(m, m->sent_at);
@@ -146,7 +149,8 @@ TransitPtr Delivery::receive(int self, int src, int tag) {
   }
 }
 
-// --- circuit fidelity ----------------------------------------------------------------------------
+// --- circuit fidelity, and analytic on duplex-limited links
+// ---------------------------------------
 
 void Delivery::schedule(Event e) {
   Waiter& net = waiters_.back();
@@ -158,7 +162,7 @@ void Delivery::schedule(Event e) {
 void Delivery::schedule_release(std::uint32_t id, Channel& c) {
   if (c.waiters.empty() || c.free_at == kNotYet || c.release_pending) return;
   c.release_pending = true;
-  schedule({c.free_at, event_seq_++, nullptr, id});
+  schedule({c.free_at, event_seq_++, Event::Kind::Release, nullptr, id});
 }
 
 // The first waiter gets the channel (a SimGrid mutex's FIFO hand-over).
@@ -176,7 +180,8 @@ void Delivery::hand_over(Channel& c, std::vector<TransitPtr>& woken) {
 }
 
 // Message m, at time t (the current virtual time), acquires the channels of its current hold that
-// it does not have yet; once it has them all, its end of hold is known.
+// it does not have yet; once it has them all, its end of hold is known (or, on duplex links, its
+// bytes start after the hold's fixed part and DuplexLinks dates their end).
 void Delivery::advance(const TransitPtr& m, double t) {
   if (m->holds.empty()) { // to itself
     m->arrival = t;
@@ -198,24 +203,12 @@ void Delivery::advance(const TransitPtr& m, double t) {
       c.free_at = kNotYet;
       ++m->next_channel;
     }
+    if (!h.links.empty()) {
+      schedule({t + h.fixed_s, event_seq_++, Event::Kind::BytesStart, m});
+      return;
+    }
     const double end = t + h.seconds;
-    for (auto ch : h.channels) {
-      const std::uint32_t id = channel_id(ch);
-      Channel& c = channels_[id];
-      c.free_at = end;
-      schedule_release(id, c);
-    }
-    if (m->stage + 1 == m->holds.size()) {
-      m->arrival = end;
-      arrived(*m);
-      return;
-    }
-    ++m->stage;
-    m->next_channel = 0;
-    if (!h.channels.empty() || !m->holds[m->stage].channels.empty()) {
-      schedule({end, event_seq_++, m, 0});
-      return;
-    }
+    if (!end_hold(m, end)) return;
     t = end; // no channel before or after: nothing to decide at `end`
   }
 }
@@ -231,25 +224,72 @@ std::uint32_t Delivery::channel_id(std::pair<int, int> c) {
   return slot;
 }
 
+// m's current hold ends at `end`: its channels are dated, then m arrives or goes on. Returns true
+// when its next stage can start at `end` at once (no channel to release or acquire).
+bool Delivery::end_hold(const TransitPtr& m, double end) {
+  const Hold& h = m->holds[m->stage];
+  for (auto ch : h.channels) {
+    const std::uint32_t id = channel_id(ch);
+    Channel& c = channels_[id];
+    c.free_at = end;
+    schedule_release(id, c);
+  }
+  if (m->stage + 1 == m->holds.size()) {
+    m->arrival = end;
+    arrived(*m);
+    return false;
+  }
+  ++m->stage;
+  m->next_channel = 0;
+  if (!h.channels.empty() || !m->holds[m->stage].channels.empty()) {
+    schedule({end, event_seq_++, Event::Kind::NextStage, m});
+    return false;
+  }
+  return true;
+}
+
+void Delivery::schedule_ends(const std::vector<DuplexLinks::Change>& changes) {
+  for (const auto& c : changes)
+    schedule({c.end, event_seq_++, Event::Kind::BytesEnd, c.m, 0, c.version});
+}
+
 void Delivery::process(const Event& e) {
   std::vector<TransitPtr>& woken = woken_;
   woken.clear();
-  if (e.next_stage) {
+  std::vector<DuplexLinks::Change> changes;
+  switch (e.kind) {
+  case Event::Kind::NextStage: {
     // Release the previous hold's channels in reverse order, continue, then the waiters go on.
-    const Transit& m = *e.next_stage;
+    const Transit& m = *e.m;
     const auto& prev = m.holds[m.stage - 1].channels;
     for (auto it = prev.rbegin(); it != prev.rend(); ++it) {
       Channel& c = channels_[channel_id(*it)];
       if (c.owner == &m) hand_over(c, woken);
     }
-    advance(e.next_stage, e.time);
-  } else {
+    advance(e.m, e.time);
+    break;
+  }
+  case Event::Kind::Release: {
     Channel& c = channels_[e.channel];
     c.release_pending = false;
     if (c.owner && c.free_at <= e.time)
       hand_over(c, woken);
     else
       schedule_release(e.channel, c); // a new owner since: its own release, once dated
+    break;
+  }
+  case Event::Kind::BytesStart: {
+    const Hold& h = e.m->holds[e.m->stage];
+    duplex_.begin(e.m, h.links, h.bytes, e.time, changes);
+    schedule_ends(changes);
+    break;
+  }
+  case Event::Kind::BytesEnd:
+    if (!duplex_.current(*e.m, e.version)) break; // superseded by a later rate change
+    duplex_.end(*e.m, e.time, changes);
+    schedule_ends(changes);
+    if (end_hold(e.m, e.time)) advance(e.m, e.time);
+    break;
   }
   for (const auto& w : woken)
     advance(w, e.time);

@@ -5,8 +5,11 @@
 // until the earliest arrival that concerns them (or until a notification). Circuit contention is
 // decided by zcube's own channel bookkeeping: the channels of a hold are acquired one by one in the
 // global order, each granted first come, first served, and held for the whole hold (DESIGN §5); a
-// single daemon actor wakes up at the releases that someone waits for. Only the flow fidelity needs
-// SimGrid's bandwidth sharing, so there one actor per message crosses the links.
+// single daemon actor wakes up at the releases that someone waits for. On links whose directions
+// slow each other down (the Volvox's T800 links), the same actor dates the end of each hop's bytes
+// as the reverse directions' traffic starts and stops (DuplexLinks), under analytic as under
+// circuit. Only the flow fidelity needs SimGrid's bandwidth sharing, so there one actor per message
+// crosses the links.
 #include <cstdint>
 #include <deque>
 #include <queue>
@@ -14,6 +17,7 @@
 
 #include <simgrid/s4u.hpp>
 
+#include "sim/duplex_links.hpp"
 #include "sim/inbox.hpp"
 #include "sim/sim_network.hpp"
 #include "sim/transit.hpp"
@@ -47,10 +51,18 @@ private:
     bool release_pending = false;
   };
   struct Event {
+    enum class Kind {
+      NextStage,  // m releases its previous hold and starts the next one
+      Release,    // this channel's owner releases it
+      BytesStart, // m's bytes start crossing its hold's duplex links
+      BytesEnd,   // m's bytes are across, if `version` is still m's latest end
+    };
     double time;
     std::uint64_t seq;
-    TransitPtr next_stage; // this message releases its previous hold and starts the next one
-    std::uint32_t channel; // else: this channel's owner releases it
+    Kind kind;
+    TransitPtr m;
+    std::uint32_t channel = 0;
+    std::uint64_t version = 0;
     bool operator>(const Event& o) const { return time != o.time ? time > o.time : seq > o.seq; }
   };
 
@@ -63,8 +75,10 @@ private:
   // The channel from c.first to c.second, created on first use (a dense index by (from, to)
   // instead of a hash map: every hold looks its channels up).
   std::uint32_t channel_id(std::pair<int, int> c);
-  // Circuit fidelity.
+  // Circuit fidelity, and analytic on links whose directions slow each other down.
   void advance(const TransitPtr& m, double t);
+  bool end_hold(const TransitPtr& m, double end);
+  void schedule_ends(const std::vector<DuplexLinks::Change>& changes);
   void schedule(Event e);
   void schedule_release(std::uint32_t id, Channel& c);
   void hand_over(Channel& c, std::vector<TransitPtr>& woken);
@@ -83,6 +97,8 @@ private:
   std::uint64_t event_seq_ = 0;
   std::vector<simgrid::s4u::SemaphorePtr> to_wake_, waking_;
   std::vector<TransitPtr> woken_; // scratch of process()
+  bool events_driven_; // circuit, or any fidelity zcube times on half-duplex-limited links
+  DuplexLinks duplex_;
 };
 
 } // namespace zc

@@ -3,6 +3,7 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -32,6 +33,10 @@ void declare_platform_flags() {
 }
 
 namespace {
+
+bool is_duplex_link(const std::string& name) {
+  return name.rfind(kDuplexLinkPrefix, 0) == 0;
+}
 
 std::vector<std::string> split(const std::string& s, char sep) {
   std::vector<std::string> out;
@@ -188,13 +193,28 @@ void check_routes(const sg::Engine& e, const PlatformModel& m, const std::string
   for (int r = 1; r < m.nodes; ++r) {
     std::vector<sg::Link*> links;
     from->route_to(e.host_by_name(node_host_name(r)), links, nullptr);
-    if (int(links.size()) != hops(m.topology, m.nodes, 0, r))
+    // A duplex link rides under a channel: it adds no hop.
+    const auto channels = std::count_if(links.begin(), links.end(), [](const sg::Link* l) {
+      return !is_duplex_link(l->get_name());
+    });
+    if (int(channels) != hops(m.topology, m.nodes, 0, r))
       throw InputError(where, 0,
-                       "route node0 -> " + node_host_name(r) + " has " +
-                           std::to_string(links.size()) + " links, a " + topology_name(m.topology) +
-                           " of " + std::to_string(m.nodes) + " nodes has " +
+                       "route node0 -> " + node_host_name(r) + " has " + std::to_string(channels) +
+                           " channels, a " + topology_name(m.topology) + " of " +
+                           std::to_string(m.nodes) + " nodes has " +
                            std::to_string(hops(m.topology, m.nodes, 0, r)));
   }
+}
+
+// The duplex links' two-way total: all alike, no latency of their own.
+void read_duplex_link(const sg::Link* l, const std::string& where, NetworkParams& n) {
+  const std::string what = "link '" + l->get_name() + "' ";
+  const double bw = checked(l->get_bandwidth(), where, what + "bandwidth", 0, true);
+  if (l->get_latency() != 0)
+    throw InputError(where, 0, what + "latency: a duplex link adds no latency (0s)");
+  if (n.both_ways_Bps != 0 && bw != n.both_ways_Bps)
+    throw InputError(where, 0, what + "differs from the others: zcube models identical channels");
+  n.both_ways_Bps = bw;
 }
 
 void read_links(const sg::Engine& e, const std::string& where, NetworkParams& n) {
@@ -202,6 +222,10 @@ void read_links(const sg::Engine& e, const std::string& where, NetworkParams& n)
   for (const sg::Link* l : e.get_all_links()) {
     const std::string name = l->get_name();
     if (name == "__loopback__") continue;
+    if (is_duplex_link(name)) {
+      read_duplex_link(l, where, n);
+      continue;
+    }
     const bool host = name == kHostUpLink || name == kHostDownLink;
     const std::string what = "link '" + name + "' ";
     const double bw = checked(l->get_bandwidth(), where, what + "bandwidth", 0, true);
@@ -228,6 +252,7 @@ const char* zone_prop(const sg::NetZone* z, const std::string& key, const std::s
 } // namespace
 
 PlatformModel read_platform(const sg::Engine& e, const std::string& where) {
+  e.seal_platform(); // a Dijkstra zone (machines with duplex links) has no routes before its seal
   PlatformModel m;
   const sg::NetZone* z = e.get_netzone_root();
   // The machine zone is the root, or its only child when the file wraps it.
@@ -290,6 +315,7 @@ PlatformModel read_platform(const sg::Engine& e, const std::string& where) {
 
 void apply_overrides(const Overrides& o, PlatformModel& m, sg::Engine& e) {
   auto& n = m.net;
+  const double one_way_per_byte = n.per_byte_s;
   if (o.latency_s) n.startup_short_s = n.startup_long_s = *o.latency_s;
   if (o.bandwidth_Bps) {
     if (!(*o.bandwidth_Bps > 0)) throw UsageError("--bandwidth must be positive");
@@ -313,9 +339,18 @@ void apply_overrides(const Overrides& o, PlatformModel& m, sg::Engine& e) {
   if (cpu != 1.0)
     for (auto& c : m.cost)
       c = c.scaled(cpu);
+  // A what-if channel rate keeps the two-way total's ratio to it (the T800's acknowledges scale
+  // with the link's bit rate).
+  if (n.both_ways_Bps > 0 && n.per_byte_s != one_way_per_byte)
+    n.both_ways_Bps *= one_way_per_byte / n.per_byte_s;
   for (sg::Link* l : e.get_all_links()) {
     const std::string name = l->get_name();
     if (name == "__loopback__") continue;
+    if (is_duplex_link(name)) {
+      l->set_bandwidth(n.both_ways_Bps);
+      l->set_latency(0);
+      continue;
+    }
     const bool host = name == kHostUpLink || name == kHostDownLink;
     const double per_byte = host ? n.host_per_byte_s : n.per_byte_s;
     l->set_bandwidth(per_byte > 0 ? 1.0 / per_byte : 1e15);

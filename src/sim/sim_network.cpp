@@ -86,10 +86,18 @@ void SimNetwork::transfer(int src, int dst, double m) {
   node_transfer(src, dst, m);
 }
 
+// A hold of `fixed` seconds then `bytes` over the node links `chans` (or over the host link).
 void SimNetwork::add_hold(std::vector<Hold>& out, std::vector<std::pair<int, int>> chans,
-                          double seconds) const {
+                          double fixed, double bytes, bool node_links) const {
+  Hold h;
+  h.seconds = std::max(fixed + bytes * (node_links ? p_.per_byte_s : p_.host_per_byte_s), 0.0);
+  if (node_links && bytes > 0 && p_.half_duplex_limited()) {
+    h.links = chans;
+    h.fixed_s = std::max(fixed, 0.0);
+    h.bytes = bytes;
+  }
   if (fid_ != Fidelity::Circuit) chans.clear();
-  if (chans.empty() && seconds <= 0) return; // nothing to wait for, nothing to acquire
+  if (chans.empty() && h.seconds <= 0) return; // nothing to wait for, nothing to acquire
   // The global order of acquisition (dimension order on the cube: the e-cube path order), which
   // rules out deadlock between circuits.
   if (topo_ == Topology::Cube) {
@@ -100,7 +108,8 @@ void SimNetwork::add_hold(std::vector<Hold>& out, std::vector<std::pair<int, int
   } else {
     std::sort(chans.begin(), chans.end());
   }
-  out.push_back({std::move(chans), std::max(seconds, 0.0)});
+  h.channels = std::move(chans);
+  out.push_back(std::move(h));
 }
 
 // The same stretches and seconds as node_transfer under the analytic and circuit fidelities.
@@ -109,11 +118,11 @@ void SimNetwork::node_holds(int src, int dst, double m, std::vector<Hold>& out) 
   auto path = route(topo_, nodes_, src, dst);
   if (p_.switching == Switching::StoreAndForward) {
     for (auto c : path)
-      add_hold(out, {c}, p_.startup(m) + m * p_.per_byte_s);
+      add_hold(out, {c}, p_.startup(m), m, true);
     return;
   }
   const double fixed = p_.startup(m) + (int(path.size()) - 1) * p_.per_hop_s;
-  add_hold(out, std::move(path), fixed + m * p_.per_byte_s);
+  add_hold(out, std::move(path), fixed, m, true);
 }
 
 std::vector<Hold> SimNetwork::holds(int src, int dst, double m) const {
@@ -125,7 +134,7 @@ std::vector<Hold> SimNetwork::holds(int src, int dst, double m) const {
   }
   if (dst == host) node_holds(src, 0, m, out);
   const std::pair<int, int> link = src == host ? std::pair{host, 0} : std::pair{0, host};
-  add_hold(out, {link}, p_.host_startup_s + m * p_.host_per_byte_s);
+  add_hold(out, {link}, p_.host_startup_s, m, false);
   if (src == host) node_holds(0, dst, m, out);
   return out;
 }

@@ -18,7 +18,12 @@ namespace zc {
 // under circuit switching, plus the host link for the host computer's messages.
 struct Hold {
   std::vector<std::pair<int, int>> channels; // in acquisition order (dimension order on a cube)
-  double seconds = 0;
+  double seconds = 0;                        // with the reverse directions idle
+  // On links whose directions slow each other down (NetworkParams::half_duplex_limited): after
+  // fixed_s, `bytes` cross the directed `links` at a rate the reverse directions' traffic decides
+  // (DuplexLinks); empty otherwise, and `seconds` is the whole hold.
+  std::vector<std::pair<int, int>> links;
+  double fixed_s = 0, bytes = 0;
 };
 
 class SimNetwork {
@@ -40,7 +45,8 @@ public:
 private:
   void node_transfer(int src, int dst, double bytes);
   void node_holds(int src, int dst, double bytes, std::vector<Hold>& out) const;
-  void add_hold(std::vector<Hold>& out, std::vector<std::pair<int, int>> chans, double s) const;
+  void add_hold(std::vector<Hold>& out, std::vector<std::pair<int, int>> chans, double fixed,
+                double bytes, bool node_links) const;
   void hold(const std::vector<std::pair<int, int>>& channels, double seconds, double flow_bytes,
             int flow_src, int flow_dst);
   simgrid::s4u::MutexPtr channel(int a, int b);

@@ -171,6 +171,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
       {"switching", pm.net.switching == Switching::Circuit ? "circuit" : "store-and-forward"},
       {"node_memory_bytes", pm.memory.empty() ? 0.0 : pm.memory[0]},
       {"os_resident_bytes", pm.os_resident}};
+  if (pm.net.both_ways_Bps > 0) j["model"]["both_ways_Bps"] = pm.net.both_ways_Bps;
 
   add_image_section(j, images, scene, cfg, res.ok, res.images);
   j["host"] = {{"wall_time_s",

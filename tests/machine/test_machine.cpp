@@ -131,9 +131,14 @@ TEST(Platforms, CompactSimGridNativeFiguresCostsOnce) {
   const auto big = platform_xml(machine_spec("ipsc860"), 1024, Topology::Cube).size();
   EXPECT_LT(big, platform_xml(machine_spec("ipsc860"), 2, Topology::Cube).size() + 64);
   EXPECT_LT(big, 6000u);
-  EXPECT_NE(
-      platform_xml(machine_spec("volvox"), 1000, Topology::Ring).find("topo_parameters=\"1000\""),
-      std::string::npos);
+  // The Volvox's T800 links need a shared duplex link under each pair of directions, which a
+  // TORUS cluster cannot hold: its nodes are written out, three links and two routes a channel.
+  const std::string ring = platform_xml(machine_spec("volvox"), 1000, Topology::Ring);
+  for (const char* k :
+       {"routing=\"DijkstraCache\"", "<link id=\"duplex-0-999\" bandwidth=\"2.35MBps\"",
+        "<link id=\"ch-999-0\" bandwidth=\"1.7MBps\"", "<route src=\"node999\" dst=\"node0\""})
+    EXPECT_NE(ring.find(k), std::string::npos) << k;
+  EXPECT_EQ(ring.find("TORUS"), std::string::npos);
   // --cpu-scale is the host speed: four times faster is 64 MHz.
   PlatformEdits fast;
   fast.cpu_scale = 0.25;
