@@ -46,6 +46,9 @@ NodeSpans create_span_lists(NodeContext& ctx, const NodeRenderer& nr, const Node
   for (const auto& t : mine.tris)
     for (int k = 0; k < 3; ++k)
       if (!pv.count(t.vid[k])) pv.emplace(t.vid[k], nr.project(t.poly.v[k], w));
+  // The projected vertices are held until every triangle is set up (28 bytes each).
+  const double projected = double(pv.size() * sizeof(ProjectedVertex));
+  ctx.alloc(projected, "projected vertices");
   NodeSpans s;
   for (std::size_t i = 0; i < mine.tris.size(); ++i) {
     const TriWorld& t = mine.tris[i];
@@ -57,9 +60,11 @@ NodeSpans create_span_lists(NodeContext& ctx, const NodeRenderer& nr, const Node
     nr.setup(t.poly.id, Triangle{{t.vid[0], t.vid[1], t.vid[2]}, t.poly.material}, p,
              textured ? uv : nullptr, s.batch, w);
   }
+  ctx.alloc(double(s.batch.tris.size() * sizeof(ScreenTriangle)), "set-up records");
+  ctx.release(projected);
   s.lists = build_span_lists(s.batch, nr.width(), nr.height(), w);
   ctx.charge(w);
-  ctx.alloc(s.bytes(), "span lists");
+  ctx.alloc(double(s.lists.bytes()), "span lists");
   return s;
 }
 

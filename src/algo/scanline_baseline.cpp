@@ -28,7 +28,9 @@ void scanline_node(NodeContext& ctx) {
   {
     auto ph = ctx.phase("span_list_creation");
     Counters w;
+    // The projected vertices (28 bytes each) are held until every triangle is set up.
     std::vector<ProjectedVertex> pv(scene.vertices.size());
+    ctx.alloc(double(pv.size() * sizeof(ProjectedVertex)), "projected vertices");
     for (std::size_t i = 0; i < pv.size(); ++i)
       pv[i] = nr.project(scene.vertices[i], w);
     for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
@@ -36,9 +38,11 @@ void scanline_node(NodeContext& ctx) {
       const ProjectedVertex* p[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
       nr.setup(std::uint32_t(i), t, p, nullptr, batch, w);
     }
+    ctx.alloc(double(batch.tris.size() * sizeof(ScreenTriangle)), "set-up records");
+    ctx.release(double(pv.size() * sizeof(ProjectedVertex)));
     lists = build_span_lists(batch, W, H, w);
     ctx.charge(w);
-    ctx.alloc(double(lists.bytes() + batch.tris.size() * sizeof(ScreenTriangle)), "span lists");
+    ctx.alloc(double(lists.bytes()), "span lists");
   }
   ActivePixels wpa;
   {
