@@ -30,7 +30,8 @@ void DuplexLinks::rerate_reverse(const std::vector<Link>& links, double t, std::
     f.remaining = std::max(0.0, f.remaining - (t - f.since) / f.per_byte);
     f.since = t;
     f.per_byte = s;
-    out.push_back({f.m, t + f.remaining * s, ++f.version});
+    f.version = ++last_version_;
+    out.push_back({f.m, t + f.remaining * s, f.version});
   }
 }
 
@@ -46,6 +47,7 @@ void DuplexLinks::begin(const TransitPtr& m, const std::vector<Link>& links, dou
   f.remaining = bytes;
   f.per_byte = per_byte(links);
   f.since = t;
+  f.version = ++last_version_;
   out.push_back({m, t + bytes * f.per_byte, f.version});
   rerate_reverse(links, t, id, out);
 }

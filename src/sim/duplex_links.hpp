@@ -56,6 +56,9 @@ private:
 
   double one_way_, both_busy_;
   std::uint64_t next_id_ = 0;
+  // Versions are unique over all flows: a stale end of a message's previous hop never matches the
+  // flow of its next hop.
+  std::uint64_t last_version_ = 0;
   std::map<std::uint64_t, Flow> flows_;                  // by start order: deterministic re-rating
   std::unordered_map<const Transit*, std::uint64_t> id_; // a message has one flow at a time
   std::map<Link, std::vector<std::uint64_t>> busy_;      // directed link -> its flows

@@ -78,3 +78,23 @@ TEST(DuplexLinks, WhatIfBandwidthScalesTheTwoWayTotal) {
     expect_rel(exchange("volvox", f, true, 0, o), n.startup(kBytes) + kBytes / 2.35e6, 1e-9,
                fidelity_name(f));
 }
+
+// Store-and-forward on a 4-node ring: node 0 sends to node 2 (hops 0->1, 1->2) while node 1 sends
+// to node 0. The first hop shares link 0-1 with node 1's message (1.175 MB/s each way); the
+// second hop has link 1-2 to itself (1.7 MB/s).
+TEST(DuplexLinks, EachStoreAndForwardHopSeesOnlyItsOwnLink) {
+  const NetworkParams& n = machine_spec("volvox").net;
+  const double s = n.startup(kBytes);
+  for (Fidelity f : kAll) {
+    const auto r = run_custom(sim_config("volvox", 4, Topology::Ring, f), [](NodeContext& ctx) {
+      Comm& c = ctx.comm();
+      if (c.rank() == 0) c.send(2, 0, Bytes(std::size_t(kBytes)));
+      if (c.rank() == 1) c.send(0, 1, Bytes(std::size_t(kBytes)));
+      if (c.rank() == 0) c.recv(1, 1);
+      if (c.rank() == 2) c.recv(0, 0);
+    });
+    ASSERT_EQ(r["status"], "ok") << r.dump();
+    expect_rel(r["virtual_time_s"].get<double>(), 2 * s + kBytes / 1.175e6 + kBytes / 1.7e6, 1e-9,
+               fidelity_name(f));
+  }
+}
