@@ -1,18 +1,26 @@
 #!/usr/bin/python3
 """Simulator scaling (issue 14): host wall time, peak RSS and simulated messages per second of
 `zcube run` against the node count P = 1..1024 for elastic, aapc-hbp and node-initiated, one
-simulation at a time. Writes results/scaling/sim_scaling.csv and sim_scaling.png (log-log, with
-an O(events) reference line through the median wall time per message).
+simulation at a time, and the issue's goals as ratios measured in the same session. Writes
+results/scaling/sim_scaling.csv, goals.csv and sim_scaling.png (log-log, with an O(events)
+reference line of slope 1).
 
-    bench/sim_scaling.py [--zcube build/zcube] [--max-nodes 1024] [--out results/scaling]
+    bench/sim_scaling.py [--zcube build/zcube] [--before OLD_ZCUBE] [--max-nodes 1024]
+                         [--out results/scaling] [--plot-only]
+
+--before measures the goals of another binary too, just before this one's (the same load), and
+writes both columns. Wall times are host wall-clock: on a shared machine compare runs made side
+by side, and prefer the minimum of repeated runs (the least disturbed).
 """
 import argparse
 import csv
 import json
 import os
+import statistics
 import subprocess
 import sys
 import tempfile
+import time
 
 CASES = [  # algorithm, scene, size, extra flags
     ("elastic", "scenes/bone.json", "512x512", []),
@@ -21,20 +29,87 @@ CASES = [  # algorithm, scene, size, extra flags
 ]
 
 
+def timed(cmd):
+    """Runs cmd; returns (process wall seconds, peak RSS bytes, CPU seconds)."""
+    t0 = time.perf_counter()
+    p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    _, status, ru = os.wait4(p.pid, 0)
+    wall = time.perf_counter() - t0
+    err = p.stderr.read().decode()
+    p.stderr.close()
+    if status != 0:
+        sys.exit(f"{' '.join(cmd)} failed: {err.strip()}")
+    return wall, ru.ru_maxrss * 1024, ru.ru_utime + ru.ru_stime
+
+
 def run(zcube, algo, scene, size, extra, nodes):
     with tempfile.NamedTemporaryFile(suffix=".json") as rep:
         cmd = [zcube, "run", "--algorithm", algo, "--machine", "ipsc860", "--nodes", str(nodes),
                "--scene", scene, "--size", size, "--report", rep.name] + extra
-        subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+        wall, rss, cpu = timed(cmd)
         r = json.load(open(rep.name))
-    messages = sum(n.get("messages", 0) for n in r["per_node"])
-    wall = r["host"]["wall_time_s"]
+    messages = r["communication"]["messages"] if "communication" in r else 0
+    sim = r["host"]["wall_time_s"]
     return {"algorithm": algo, "nodes": nodes, "status": r["status"],
             "image_identical": r.get("image", {}).get("identical_to_sequential"),
-            "virtual_s": r["virtual_time_s"], "messages": messages, "wall_s": wall,
-            "peak_rss_mb": r["host"]["peak_rss_bytes"] / 2**20,
-            "messages_per_s": messages / wall if wall > 0 else 0,
-            "wall_us_per_message": 1e6 * wall / messages if messages else ""}
+            "virtual_s": r["virtual_time_s"], "messages": messages, "wall_s": sim,
+            "process_wall_s": wall, "process_cpu_s": cpu, "peak_rss_mb": rss / 2**20,
+            "messages_per_s": messages / sim if sim > 0 else 0,
+            "wall_us_per_message": 1e6 * sim / messages if messages else ""}
+
+
+def best_of(n, f):
+    return min(f() for _ in range(n))
+
+
+def goals(zcube, repeat):
+    """The issue's goals, each as the measured value and its bound."""
+    g = {}
+    g["render_bone_512_s"] = best_of(repeat, lambda: timed(
+        [zcube, "render", "--scene", "scenes/bone.json", "--size", "512x512",
+         "--image", os.path.join(tempfile.gettempdir(), "zcube_scaling_bone.png")])[0])
+    el = [run(zcube, *CASES[0], 1024) for _ in range(max(1, repeat // 3))]
+    g["elastic_1024_s"] = min(r["process_wall_s"] for r in el)
+    g["elastic_1024_over_render"] = g["elastic_1024_s"] / g["render_bone_512_s"]
+    g["elastic_1024_peak_gb"] = max(r["peak_rss_mb"] for r in el) / 1024
+    for p in (256, 1024):
+        a = min((run(zcube, *CASES[1], p) for _ in range(max(1, repeat // 3))),
+                key=lambda r: r["wall_s"])
+        g[f"aapc_hbp_{p}_messages_per_s"] = a["messages_per_s"]
+    for algo in ("elastic", "aapc-hbp"):
+        case = next(c for c in CASES if c[0] == algo)
+        lo = min((run(zcube, *case, 32) for _ in range(repeat)), key=lambda r: r["wall_s"])
+        hi = run(zcube, *case, 1024)
+        g[f"{algo}_us_per_message_1024_over_32"] = (hi["wall_us_per_message"] /
+                                                     lo["wall_us_per_message"])
+    g["run_list_ms"] = 1e3 * best_of(repeat, lambda: timed([zcube, "run", "--list"])[0])
+    ratios = []
+    for _ in range(repeat):
+        r = run(zcube, "aapc-hbp", "scenes/kurc/1pot.json", "400x400", [], 16)
+        ratios.append(r["process_wall_s"] / r["wall_s"])
+    g["kurc16_process_over_simulation"] = min(ratios)
+    g["kurc16_process_over_simulation_median"] = statistics.median(ratios)
+    return g
+
+
+BOUNDS = {"elastic_1024_over_render": ("<=", 20), "elastic_1024_peak_gb": ("<=", 4),
+          "aapc_hbp_256_messages_per_s": (">=", 3e5), "aapc_hbp_1024_messages_per_s": (">=", 3e5),
+          "elastic_us_per_message_1024_over_32": ("<=", 2),
+          "aapc-hbp_us_per_message_1024_over_32": ("<=", 2), "run_list_ms": ("<", 50),
+          "kurc16_process_over_simulation": ("<", 3),
+          "kurc16_process_over_simulation_median": ("<", 3)}
+
+
+def write_goals(out, after, before):
+    with open(os.path.join(out, "goals.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["goal", "bound", "before", "after", "met"])
+        for k, v in after.items():
+            op, bound = BOUNDS.get(k, ("", ""))
+            met = "" if not op else (v <= bound if op == "<=" else v >= bound if op == ">="
+                                     else v < bound)
+            w.writerow([k, f"{op} {bound:g}" if op else "",
+                        f"{before[k]:.4g}" if before else "", f"{v:.4g}", met])
 
 
 def plot(rows, out):
@@ -47,11 +122,11 @@ def plot(rows, out):
         ax.loglog([r["messages"] for r in pts], [r["wall_s"] for r in pts], "o-", label=algo)
         for r in pts:
             ax.annotate(f'P={r["nodes"]}', (r["messages"], r["wall_s"]), fontsize=6)
-    if any(r["messages"] for r in rows):
-        top = max(rows, key=lambda r: r["messages"])  # slope 1 through the largest run
+    pts = [r for r in rows if r["messages"]]
+    if pts:
+        top = max(pts, key=lambda r: r["messages"])  # slope 1 through the largest run
         k = top["wall_s"] / top["messages"]
-        xs = [min(r["messages"] for r in rows if r["messages"]),
-              max(r["messages"] for r in rows)]
+        xs = [min(r["messages"] for r in pts), top["messages"]]
         ax.loglog(xs, [k * x for x in xs], "k--", label="O(events): slope 1 through the largest run")
     ax.set_xlabel("simulated messages")
     ax.set_ylabel("host wall time of the simulation (s)")
@@ -64,7 +139,9 @@ def plot(rows, out):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--zcube", default="build/zcube")
+    ap.add_argument("--before", help="another zcube binary whose goals are measured alongside")
     ap.add_argument("--max-nodes", type=int, default=1024)
+    ap.add_argument("--repeat", type=int, default=9, help="runs of each goal's short commands")
     ap.add_argument("--out", default="results/scaling")
     ap.add_argument("--plot-only", action="store_true", help="redraw from the CSV in --out")
     a = ap.parse_args()
@@ -87,6 +164,11 @@ def main():
         w.writeheader()
         w.writerows(rows)
     plot(rows, a.out)
+    if a.max_nodes >= 1024:
+        before = goals(a.before, a.repeat) if a.before else None
+        after = goals(a.zcube, a.repeat)
+        write_goals(a.out, after, before)
+        print(json.dumps({"before": before, "after": after}, indent=1))
     print("load average at the end:", os.getloadavg(), file=sys.stderr)
 
 

@@ -1,16 +1,19 @@
-// Wavefront OBJ + MTL through tinyobjloader (Malerich 2017: models come as .obj with a .mtl that
-// holds the textures). tinyobjloader is lenient, so the text is checked first, line by line, and
-// every fault becomes an InputError with its line number.
+// Wavefront OBJ + MTL (Malerich 2017: models come as .obj with a .mtl that holds the textures).
+// The geometry comes from zcube's own checking pass (scene/obj_text: tinyobjloader is lenient, so
+// every line had to be checked and parsed anyway, and parsing it a second time through
+// tinyobjloader's istream reader ran at 50 MB/s); the materials come from tinyobjloader, which
+// reads the material libraries and assigns the usemtl ids. Every fault is an InputError with its
+// line number.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <sstream>
-#include <unordered_map>
 
 #include <tiny_obj_loader.h>
 
 #include "scene/loaders.hpp"
+#include "scene/obj_text.hpp"
 #include "scene/text.hpp"
 #include "util/error.hpp"
 
@@ -99,79 +102,6 @@ MtlInfo check_mtl(const std::string& path, const std::string& obj_file, int obj_
   return info;
 }
 
-struct ObjCheck {
-  std::map<std::string, TexRef> texture;
-  std::size_t faces = 0;
-};
-
-// Validates every line tinyobjloader would accept silently: numbers, face index ranges,
-// the material library and its textures.
-ObjCheck check_obj(const std::string& path, const std::string& s) {
-  long long total[3] = {0, 0, 0}; // v, vt, vn
-  for_lines(s, [&](const Line& l) {
-    std::string_view k = keyword(l.text);
-    if (k == "v")
-      ++total[0];
-    else if (k == "vt")
-      ++total[1];
-    else if (k == "vn")
-      ++total[2];
-  });
-  ObjCheck out;
-  long long seen[3] = {0, 0, 0};
-  const std::string dir = text::directory_of(path);
-  for_lines(s, [&](const Line& l) {
-    std::string_view k = keyword(l.text);
-    if (k == "v") {
-      need_numbers(path, l, 3, 3);
-      ++seen[0];
-    } else if (k == "vt") {
-      need_numbers(path, l, 1, 3);
-      ++seen[1];
-    } else if (k == "vn") {
-      need_numbers(path, l, 3, 3);
-      ++seen[2];
-    } else if (k == "f") {
-      auto tok = text::split(l.text);
-      if (tok.size() < 4) throw InputError(path, l.number, "a face needs at least 3 vertices");
-      if (tok.size() > 256) throw InputError(path, l.number, "a face has more than 255 vertices");
-      for (std::size_t q = 1; q < tok.size(); ++q) {
-        std::string_view ref = tok[q];
-        if (ref.back() == '/' || std::count(ref.begin(), ref.end(), '/') > 2)
-          throw InputError(path, l.number, "bad face vertex '" + std::string(ref) + "'");
-        for (int part = 0; part < 3 && !ref.empty(); ++part) {
-          std::size_t slash = ref.find('/');
-          std::string_view num = ref.substr(0, slash);
-          ref = slash == std::string_view::npos ? std::string_view() : ref.substr(slash + 1);
-          if (num.empty() && part > 0) continue; // v//vn
-          static const char* what[3] = {"vertex", "texture coordinate", "normal"};
-          auto v = text::to_int(num);
-          if (!v) throw InputError(path, l.number, "bad face vertex '" + std::string(tok[q]) + "'");
-          long long idx = *v < 0 ? seen[part] + *v + 1 : *v;
-          if (*v == 0 || idx < 1 || idx > total[part])
-            throw InputError(path, l.number,
-                             std::string(what[part]) + " index " + std::to_string(*v) +
-                                 " out of range (the file has " + std::to_string(total[part]) +
-                                 ")");
-        }
-      }
-      ++out.faces;
-    } else if (k == "mtllib") {
-      auto tok = text::split(l.text);
-      if (tok.size() < 2) throw InputError(path, l.number, "mtllib needs a file name");
-      for (std::size_t q = 1; q < tok.size(); ++q) {
-        MtlInfo m = check_mtl(text::join_path(dir, std::string(tok[q])), path, l.number);
-        for (auto& [name, tex] : m.texture)
-          out.texture[name] = tex;
-      }
-    } else if (k == "usemtl") {
-      if (text::split(l.text).size() < 2) throw InputError(path, l.number, "usemtl needs a name");
-    }
-  });
-  if (out.faces == 0) throw InputError(path, 0, "no faces");
-  return out;
-}
-
 } // namespace
 
 void append_obj(Scene& scene, const std::string& path, const ObjectTransform& xf,
@@ -180,21 +110,30 @@ void append_obj(Scene& scene, const std::string& path, const ObjectTransform& xf
   if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, 0, "mesh file not found");
   std::string src = text::read_file(path);
   if (src.starts_with("\xEF\xBB\xBF")) src.erase(0, 3); // a UTF-8 byte-order mark
-  ObjCheck check = check_obj(path, src);
+  std::map<std::string, TexRef> textures;               // by material name, from every mtllib
+  const std::string dir = text::directory_of(path);
+  const ObjText obj = read_obj_text(path, src, [&](const std::string& file, int line) {
+    for (auto& [name, tex] : check_mtl(text::join_path(dir, file), path, line).texture)
+      textures[name] = tex;
+  });
 
+  // tinyobjloader reads the material lines alone (obj_text.hpp): segment k's material id is the
+  // k-th marker face's.
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
   std::vector<tinyobj::material_t> mats;
   std::string warn, err;
-  const std::string dir = text::directory_of(path);
-  // From the text already checked (without its byte-order mark), not from the file again.
-  std::istringstream in(src);
+  std::istringstream in(obj.materials_obj);
   tinyobj::MaterialFileReader materials(dir.empty() ? std::string() : dir + "/");
   if (!tinyobj::LoadObj(&attrib, &shapes, &mats, &warn, &err, &in, &materials,
                         /*triangulate=*/false))
     throw InputError(path, 0, "cannot parse OBJ: " + std::string(text::trim(err)));
-  for (float f : attrib.vertices)
-    if (!std::isfinite(f)) throw InputError(path, 0, "non-finite vertex coordinate");
+  std::vector<int> segment_material;
+  for (const auto& sh : shapes)
+    segment_material.insert(segment_material.end(), sh.mesh.material_ids.begin(),
+                            sh.mesh.material_ids.end());
+  if (segment_material.size() <= std::size_t(obj.face_segment.back())) // segments never decrease
+    throw std::logic_error("OBJ: tinyobjloader dropped a material marker of " + path);
 
   // Materials: appended to the scene; textures loaded only where a material uses one.
   const std::uint32_t mat_base = std::uint32_t(scene.materials.size());
@@ -203,8 +142,8 @@ void append_obj(Scene& scene, const std::string& path, const ObjectTransform& xf
     Material m;
     m.name = mats[i].name;
     m.kd = glm::vec3(mats[i].diffuse[0], mats[i].diffuse[1], mats[i].diffuse[2]);
-    auto it = check.texture.find(mats[i].name);
-    if (it != check.texture.end()) {
+    auto it = textures.find(mats[i].name);
+    if (it != textures.end()) {
       const TexRef& ref = it->second;
       int found = -1;
       for (std::size_t t = 0; t < scene.textures.size(); ++t)
@@ -219,11 +158,12 @@ void append_obj(Scene& scene, const std::string& path, const ObjectTransform& xf
     }
     scene.materials.push_back(m);
   }
+  const auto face_material = [&](std::size_t f) { return segment_material[obj.face_segment[f]]; };
   bool textured = false;
-  for (const auto& sh : shapes)
-    for (int id : sh.mesh.material_ids)
-      if (id >= 0 && std::size_t(id) < mats.size() && mat_textured[std::size_t(id)])
-        textured = true;
+  for (std::size_t f = 0; f < obj.face_size.size(); ++f)
+    if (const int id = face_material(f);
+        id >= 0 && std::size_t(id) < mats.size() && mat_textured[std::size_t(id)])
+      textured = true;
 
   // Face-varying corners (v, vn, vt) become zcube vertices, first come first numbered; vt takes
   // part only when the mesh is textured (pay only for what is used).
@@ -231,56 +171,58 @@ void append_obj(Scene& scene, const std::string& path, const ObjectTransform& xf
     int v, n, t;
     bool operator==(const Key& o) const { return v == o.v && n == o.n && t == o.t; }
   };
-  struct KeyHash {
-    std::size_t operator()(const Key& k) const {
-      return std::size_t(k.v) * 0x9E3779B97F4A7C15ull ^
-             std::size_t(k.n + 1) * 0xC2B2AE3D27D4EB4Full ^
-             std::size_t(k.t + 1) * 0x165667B19E3779F9ull;
-    }
-  };
-  std::unordered_map<Key, std::uint32_t, KeyHash> ids;
+  // Keys sharing a position are chained from it (most positions have one key): a lookup is a
+  // short walk, with no hashing and no allocation per key.
+  constexpr std::uint32_t kNone = ~0u;
+  std::vector<std::uint32_t> first_key(obj.positions.size() / 3, kNone), next_key;
   std::vector<Key> keys;
+  keys.reserve(obj.positions.size() / 3);
+  next_key.reserve(obj.positions.size() / 3);
+  const auto key_id = [&](const Key& k) {
+    std::uint32_t& head = first_key[std::size_t(k.v)];
+    for (std::uint32_t i = head; i != kNone; i = next_key[i])
+      if (keys[i] == k) return i;
+    keys.push_back(k);
+    next_key.push_back(head);
+    head = std::uint32_t(keys.size() - 1);
+    return head;
+  };
   std::vector<Triangle> tris;
-  tris.reserve(check.faces);
-  for (const auto& sh : shapes) {
-    std::size_t off = 0;
-    for (std::size_t f = 0; f < sh.mesh.num_face_vertices.size(); ++f) {
-      const std::size_t nv = sh.mesh.num_face_vertices[f];
-      std::uint32_t corner[256];
-      for (std::size_t c = 0; c < nv; ++c) {
-        const auto& ix = sh.mesh.indices[off + c];
-        Key k{ix.vertex_index, ix.normal_index, textured ? ix.texcoord_index : -1};
-        auto [it, fresh] = ids.emplace(k, std::uint32_t(keys.size()));
-        if (fresh) keys.push_back(k);
-        corner[c] = it->second;
-      }
-      int mid = f < sh.mesh.material_ids.size() ? sh.mesh.material_ids[f] : -1;
-      std::uint32_t mat = mid >= 0 && std::size_t(mid) < mats.size() ? mat_base + std::uint32_t(mid)
-                                                                     : default_material;
-      for (std::size_t c = 1; c + 1 < nv; ++c) { // a polygon becomes a fan around its first corner
-        Triangle t;
-        t.v[0] = corner[0];
-        t.v[1] = corner[flip_winding ? c + 1 : c];
-        t.v[2] = corner[flip_winding ? c : c + 1];
-        t.material = mat;
-        tris.push_back(t);
-      }
-      off += nv;
+  tris.reserve(obj.face_size.size());
+  std::size_t off = 0;
+  for (std::size_t f = 0; f < obj.face_size.size(); ++f) {
+    const std::size_t nv = obj.face_size[f];
+    std::uint32_t corner[256];
+    for (std::size_t c = 0; c < nv; ++c) {
+      const ObjCorner& ix = obj.corners[off + c];
+      Key k{ix.v, ix.n, textured ? ix.t : -1};
+      corner[c] = key_id(k);
     }
+    const int mid = face_material(f);
+    std::uint32_t mat = mid >= 0 && std::size_t(mid) < mats.size() ? mat_base + std::uint32_t(mid)
+                                                                   : default_material;
+    for (std::size_t c = 1; c + 1 < nv; ++c) { // a polygon becomes a fan around its first corner
+      Triangle t;
+      t.v[0] = corner[0];
+      t.v[1] = corner[flip_winding ? c + 1 : c];
+      t.v[2] = corner[flip_winding ? c : c + 1];
+      t.material = mat;
+      tris.push_back(t);
+    }
+    off += nv;
   }
 
   // Area-weighted position normals for corners the file gives no normal.
-  const std::size_t npos = attrib.vertices.size() / 3;
+  const std::size_t npos = obj.positions.size() / 3;
   auto pos = [&](int v) {
-    return glm::dvec3(attrib.vertices[3 * std::size_t(v)], attrib.vertices[3 * std::size_t(v) + 1],
-                      attrib.vertices[3 * std::size_t(v) + 2]);
+    return glm::dvec3(obj.positions[3 * std::size_t(v)], obj.positions[3 * std::size_t(v) + 1],
+                      obj.positions[3 * std::size_t(v) + 2]);
   };
   std::vector<glm::dvec3> area_n;
   auto file_normal = [&](const Key& k) {
-    if (k.n < 0 || 3 * std::size_t(k.n) + 2 >= attrib.normals.size()) return glm::dvec3(0);
-    return glm::dvec3(attrib.normals[3 * std::size_t(k.n)],
-                      attrib.normals[3 * std::size_t(k.n) + 1],
-                      attrib.normals[3 * std::size_t(k.n) + 2]);
+    if (k.n < 0 || 3 * std::size_t(k.n) + 2 >= obj.normals.size()) return glm::dvec3(0);
+    return glm::dvec3(obj.normals[3 * std::size_t(k.n)], obj.normals[3 * std::size_t(k.n) + 1],
+                      obj.normals[3 * std::size_t(k.n) + 2]);
   };
   bool need_area = false; // some corner has no usable file normal
   for (const auto& k : keys)
@@ -321,9 +263,9 @@ void append_obj(Scene& scene, const std::string& path, const ObjectTransform& xf
     scene.vertices.push_back(v);
     if (textured || !scene.uvs.empty()) {
       glm::vec2 uv(0);
-      if (k.t >= 0 && 2 * std::size_t(k.t) + 1 < attrib.texcoords.size())
-        uv = glm::vec2(attrib.texcoords[2 * std::size_t(k.t)],
-                       attrib.texcoords[2 * std::size_t(k.t) + 1]);
+      if (k.t >= 0 && 2 * std::size_t(k.t) + 1 < obj.texcoords.size())
+        uv =
+            glm::vec2(obj.texcoords[2 * std::size_t(k.t)], obj.texcoords[2 * std::size_t(k.t) + 1]);
       scene.uvs.push_back(uv);
     }
   }

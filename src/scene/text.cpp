@@ -87,9 +87,20 @@ std::string read_file(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, 0, "cannot open file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  // Read straight into a string of the file's size (a stringstream copied it twice); a file that
+  // is not a regular file (a pipe) has no size and is read to its end.
+  std::string s;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (!ec && std::filesystem::is_regular_file(path, ec)) {
+    s.resize(std::size_t(size));
+    in.read(s.data(), std::streamsize(s.size()));
+    s.resize(std::size_t(in.gcount()));
+    if (in.gcount() == std::streamsize(size) && in.peek() == std::char_traits<char>::eof())
+      return s;
+  }
+  std::ostringstream rest;
+  rest << in.rdbuf();
+  return s + rest.str();
 }
 
 std::string directory_of(const std::string& path) {

@@ -299,3 +299,16 @@ TEST(SceneLoaders, OverrideCannotBeAbsurd) {
   o.width = zc::kMaxImageSide + 1;
   EXPECT_THROW(zc::load_scene(src("scenes/blazek_fig9.sdl"), o), zc::InputError);
 }
+
+TEST(SceneLoaders, ObjFacesGetTheMaterialTheirUsemtlNames) {
+  zc::Scene s = zc::load_scene(src("tests/data/scene/materials.obj"));
+  ASSERT_EQ(s.triangles.size(), 4u);
+  ASSERT_EQ(s.materials.size(), 4u); // the default, then red, green, red as the library lists them
+  EXPECT_EQ(s.materials[1].kd, glm::vec3(1, 0, 0));
+  EXPECT_EQ(s.materials[2].kd, glm::vec3(0, 1, 0));
+  EXPECT_EQ(s.triangles[0].material, 0u); // before any usemtl
+  EXPECT_EQ(s.triangles[1].material, 2u); // green, across the group
+  EXPECT_EQ(s.triangles[2].material, 0u); // an unknown name falls back to the default
+  EXPECT_EQ(s.triangles[3].material, 1u); // the first red
+  EXPECT_EQ(s.vertices[s.triangles[3].v[0]].position, glm::vec3(0, 0, 0)); // -4 of 4 vertices
+}
