@@ -130,6 +130,9 @@ struct Algorithm {
   bool renders_frames = false;     // draws --frames K pictures of the camera path
   bool needs_cube = false;         // runs on hypercubes only (--topology cube)
   bool untextured = false;         // renders untextured scenes only
+  // Checks of its options against the node count, once the platform is known and before the
+  // simulation starts (UsageError), e.g. pingpong's --from and --to.
+  std::function<void(const AlgorithmOptions&, int nodes)> check_nodes;
 };
 
 const std::vector<Algorithm>& algorithms();

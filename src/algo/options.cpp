@@ -3,8 +3,10 @@
 // failure of the node that first reads it.
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 
 #include "algo/algorithm.hpp"
+#include "machine/units.hpp"
 #include "util/error.hpp"
 
 namespace zc {
@@ -28,6 +30,17 @@ bool list_in(const std::string& s, long long min, long long max) {
   }
 }
 
+// Sizes with units, like every size flag (machine/units.hpp), each a whole byte count in range.
+bool sizes_in(const std::string& s, long long min, long long max) {
+  try {
+    for (double b : parse_bytes_list(s, "--sizes"))
+      if (b != std::floor(b) || b < double(min) || b > double(max)) return false;
+    return true;
+  } catch (const UsageError&) {
+    return false;
+  }
+}
+
 std::string expected(const OptionSpec& o) {
   const std::string range = std::to_string(o.min) + ".." + std::to_string(o.max);
   switch (o.kind) {
@@ -40,7 +53,7 @@ std::string expected(const OptionSpec& o) {
   case OptionSpec::Kind::Integer:
     return "an integer in " + range;
   case OptionSpec::Kind::SizeList:
-    return "comma-separated byte counts in " + range;
+    return "comma-separated sizes with units (0B, 64B, 1KiB), whole bytes in " + range;
   case OptionSpec::Kind::NodeList:
     return "comma-separated node numbers in " + range;
   }
@@ -54,6 +67,7 @@ bool valid(const OptionSpec& o, const std::string& v) {
   case OptionSpec::Kind::Integer:
     return integer_in(v, o.min, o.max);
   case OptionSpec::Kind::SizeList:
+    return sizes_in(v, o.min, o.max);
   case OptionSpec::Kind::NodeList:
     return list_in(v, o.min, o.max);
   }

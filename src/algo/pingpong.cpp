@@ -3,42 +3,61 @@
 #include <sstream>
 
 #include "machine/topology.hpp"
+#include "machine/units.hpp"
 #include "util/error.hpp"
 
 namespace zc {
 
 namespace {
 
+// Sizes and node lists were checked by validate_options (whole bytes with units, node numbers).
 std::vector<std::size_t> parse_sizes(const std::string& s) {
   std::vector<std::size_t> v;
-  std::stringstream ss(s);
-  for (std::string item; std::getline(ss, item, ',');) {
-    if (item.empty() || item.find_first_not_of("0123456789") != std::string::npos)
-      throw UsageError("--sizes '" + s + "': expected comma-separated byte counts");
-    v.push_back(std::stoull(item));
-  }
+  for (double b : parse_bytes_list(s, "--sizes"))
+    v.push_back(std::size_t(b));
   return v;
+}
+
+std::vector<int> parse_nodes(const std::string& s) {
+  std::vector<int> v;
+  std::stringstream ss(s);
+  for (std::string item; std::getline(ss, item, ',');)
+    v.push_back(std::stoi(item));
+  return v;
+}
+
+// The answering nodes: --to, else every node but --from.
+std::vector<int> targets(const AlgorithmOptions& o, int P) {
+  const int from = std::stoi(o.get("from"));
+  if (!o.get("to").empty()) return parse_nodes(o.get("to"));
+  std::vector<int> t;
+  for (int n = 0; n < P; ++n)
+    if (n != from) t.push_back(n);
+  return t;
+}
+
+void check_nodes(const AlgorithmOptions& o, int P) {
+  const int from = std::stoi(o.get("from"));
+  if (from >= P)
+    throw UsageError("--from " + o.get("from") + ": no such node (the machine has nodes 0.." +
+                     std::to_string(P - 1) + ")");
+  for (int t : targets(o, P))
+    if (t >= P || t == from)
+      throw UsageError(
+          "--to " + std::to_string(t) + ": " +
+          (t == from ? std::string("the sending node itself")
+                     : "no such node (the machine has nodes 0.." + std::to_string(P - 1) + ")"));
+  if (targets(o, P).empty())
+    throw UsageError("--from " + o.get("from") + ": no other node to answer");
 }
 
 void pingpong_node(NodeContext& ctx) {
   Comm& c = ctx.comm();
   const int P = c.size();
   const int from = std::stoi(ctx.options().get("from"));
-  const std::string to_opt = ctx.options().get("to");
   const auto sizes = parse_sizes(ctx.options().get("sizes"));
-  std::vector<int> targets;
-  if (to_opt.empty()) {
-    for (int t = 0; t < P; ++t)
-      if (t != from) targets.push_back(t);
-  } else {
-    for (auto t : parse_sizes(to_opt))
-      targets.push_back(int(t));
-  }
-  for (int t : targets)
-    if (from < 0 || from >= P || t < 0 || t >= P || t == from)
-      throw UsageError("--from/--to must name two different nodes of 0.." + std::to_string(P - 1));
   auto results = nlohmann::json::array();
-  for (int t : targets)
+  for (int t : targets(ctx.options(), P))
     for (std::size_t m : sizes) {
       if (c.rank() == from) {
         const double t0 = c.now();
@@ -76,6 +95,7 @@ Algorithm pingpong_algorithm() {
   a.name = "pingpong";
   a.summary = "communication benchmark: one-way time per message size and distance";
   a.node = pingpong_node;
+  a.check_nodes = check_nodes;
   a.options = {{"from", OptionSpec::Kind::Integer, "0", {}, 0, 1023, "sending node"},
                {"to",
                 OptionSpec::Kind::NodeList,
@@ -86,11 +106,11 @@ Algorithm pingpong_algorithm() {
                 "answering node(s), comma-separated (default: every other node)"},
                {"sizes",
                 OptionSpec::Kind::SizeList,
-                "0,64,100,101,1024,65536",
+                "0B,64B,100B,101B,1KiB,64KiB",
                 {},
                 0,
                 1LL << 30,
-                "message sizes in bytes, comma-separated"}};
+                "message sizes with units, comma-separated"}};
   return a;
 }
 

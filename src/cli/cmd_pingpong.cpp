@@ -19,10 +19,11 @@ static int cmd_pingpong(std::vector<std::string> args) {
   sf.add_to(app);
   int from = 0;
   std::string to;
-  std::string sizes = "0,64,100,101,1024,65536", report;
+  std::string sizes = "0B,64B,100B,101B,1KiB,64KiB", report;
   app.add_option("--from", from, "sending node")->capture_default_str();
   app.add_option("--to", to, "answering node(s), comma-separated (default: every other node)");
-  app.add_option("--sizes", sizes, "message sizes in bytes")->capture_default_str();
+  app.add_option("--sizes", sizes, "message sizes with units, comma-separated")
+      ->capture_default_str();
   app.add_option("--report", report, "write the report JSON");
   if (int rc = parse(app, args); rc >= 0) return rc;
   check_output_path(report, "--report");

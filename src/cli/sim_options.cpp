@@ -16,7 +16,9 @@ void SimFlags::add_to(CLI::App& app) {
       app.add_option("--nodes", nodes,
                      "simulated nodes (a power of two on a cube; a platform .xml states its own)")
           ->capture_default_str();
-  app.add_option("--topology", topology, "cube or ring")->capture_default_str();
+  topology_option =
+      app.add_option("--topology", topology, "cube or ring (a platform .xml states its own)")
+          ->capture_default_str();
   app.add_option("--fidelity", fidelity, "analytic, flow or circuit")->capture_default_str();
   app.add_option("--latency", latency, "what-if: message start-up (e.g. 275us)");
   app.add_option("--bandwidth", bandwidth, "what-if: channel bandwidth (e.g. 2.8MBps)");
@@ -49,11 +51,11 @@ std::vector<std::string> SimFlags::simgrid_args() const {
 }
 
 std::map<std::string, std::string> SimFlags::flags() const {
-  std::map<std::string, std::string> m = {
-      {"machine", machine}, {"topology", topology}, {"fidelity", fidelity}};
-  // A platform .xml states its own node count unless --nodes is given.
-  if (!machine.ends_with(".xml") || (nodes_option && nodes_option->count() > 0))
-    m["nodes"] = std::to_string(nodes);
+  std::map<std::string, std::string> m = {{"machine", machine}, {"fidelity", fidelity}};
+  // A platform .xml states its own node count unless --nodes is given, and its own topology.
+  const bool xml = machine.ends_with(".xml");
+  if (!xml || (nodes_option && nodes_option->count() > 0)) m["nodes"] = std::to_string(nodes);
+  if (!xml || (topology_option && topology_option->count() > 0)) m["topology"] = topology;
   const std::pair<const char*, const std::string*> text[] = {
       {"latency", &latency},     {"bandwidth", &bandwidth}, {"per-hop", &per_hop},
       {"cpu-scale", &cpu_scale}, {"memory", &memory},       {"cost-scale", &cost_scale}};

@@ -17,6 +17,7 @@ struct SimFlags {
   std::string latency, bandwidth, per_hop, cpu_scale, memory, cost_scale;
   std::vector<std::string> cfg, log;   // passed to SimGrid as --cfg=... and --log=...
   CLI::Option* nodes_option = nullptr; // a platform .xml gives the node count unless --nodes does
+  CLI::Option* topology_option = nullptr; // and its topology (--topology with it is refused)
 
   void add_to(CLI::App& app);
   // The given flags as text (sim/run_flags.hpp), for config_from_flags.

@@ -1,5 +1,6 @@
 #include "machine/units.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <map>
@@ -33,6 +34,8 @@ double parse_with(const std::string& text, const std::string& flag,
   if (it == units.end())
     throw UsageError(flag + " '" + text + "': unknown unit '" + unit + "' (use " +
                      unit_list(units) + ")");
+  if (!std::isfinite(v * it->second))
+    throw UsageError(flag + " '" + text + "': beyond the largest " + what + " a double holds");
   return v * it->second;
 }
 
@@ -60,6 +63,17 @@ double parse_bytes(const std::string& text, const std::string& flag, Unit rule) 
       {"", 1},     {"B", 1},        {"kB", 1e3},        {"KB", 1e3},          {"MB", 1e6},
       {"GB", 1e9}, {"KiB", 1024.0}, {"MiB", 1048576.0}, {"GiB", 1073741824.0}};
   return parse_with(text, flag, u, "size", rule, "16MiB");
+}
+
+std::vector<double> parse_bytes_list(const std::string& text, const std::string& flag) {
+  std::vector<double> v;
+  std::size_t i = 0;
+  while (true) {
+    const std::size_t j = std::min(text.find(',', i), text.size());
+    v.push_back(parse_bytes(text.substr(i, j - i), flag, Unit::Required));
+    if (j == text.size()) return v;
+    i = j + 1;
+  }
 }
 
 double parse_speed(const std::string& text, const std::string& flag, Unit rule) {

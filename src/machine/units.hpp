@@ -5,6 +5,7 @@
 // naming the flag and the units it takes. (SimGrid's own xbt_parse_get_* take the same units but
 // end the process on a bad string, so they cannot give a one-line usage error.)
 #include <string>
+#include <vector>
 
 namespace zc {
 
@@ -16,6 +17,8 @@ double parse_bandwidth(const std::string& text, const std::string& flag = "rate"
                        Unit unit = Unit::Optional); // bytes/s
 double parse_bytes(const std::string& text, const std::string& flag = "size",
                    Unit unit = Unit::Optional); // bytes
+// Comma-separated sizes, each with its unit ("0B,64B,1KiB"): --sizes of zcube pingpong.
+std::vector<double> parse_bytes_list(const std::string& text, const std::string& flag);
 double parse_speed(const std::string& text, const std::string& flag = "speed",
                    Unit unit = Unit::Optional); // flop/s ("10Mf")
 

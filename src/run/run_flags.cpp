@@ -29,6 +29,9 @@ const std::vector<std::string>& run_flag_names() {
 
 namespace {
 
+constexpr double kMaxWhatIfDelay_s = 3600;      // --latency, --per-hop
+constexpr double kMinWhatIfBandwidth_Bps = 1.0; // --bandwidth
+
 int parse_int(const std::string& s, const std::string& flag) {
   std::size_t used = 0;
   int v = 0;
@@ -64,6 +67,11 @@ SimConfig config_from_flags(const std::map<std::string, std::string>& v, const s
   const bool xml = c.machine.ends_with(".xml");
   c.nodes = v.count("nodes") ? parse_int(v.at("nodes"), "nodes") : (xml ? 0 : 1);
   if (!xml) check_node_count(c.topology, c.nodes);
+  if (xml && v.count("topology"))
+    throw UsageError("--topology " + v.at("topology") + " with --machine " + c.machine +
+                     ": a platform file states its own topology (write one with zcube platform "
+                     "--topology " +
+                     v.at("topology") + ")");
   c.algorithm = get("algorithm", "sequential");
   c.scene_path = get("scene", scene.c_str());
   if (v.count("size")) {
@@ -72,13 +80,34 @@ SimConfig config_from_flags(const std::map<std::string, std::string>& v, const s
     c.height = s.height;
   }
   c.options.frames = v.count("frames") ? parse_int(v.at("frames"), "frames") : 1;
-  if (v.count("latency"))
+  // What-ifs beyond these magnitudes push the virtual clock past 2^52 ns, where a double no longer
+  // resolves the simulated CPU's nanoseconds (a 1e300 s latency made every compute phase 0 s; the
+  // run also fails then, sim/simulation.cpp). Physical machines sit far inside them.
+  const std::string clock_why = ": slower costs push the simulated clock (a double) past 2^52 ns, "
+                                "where compute times are rounded";
+  if (v.count("latency")) {
     c.overrides.latency_s = parse_time(v.at("latency"), "--latency", Unit::Required);
-  if (v.count("bandwidth"))
+    if (*c.overrides.latency_s > kMaxWhatIfDelay_s)
+      throw UsageError("--latency '" + v.at("latency") + "': above 1 h" + clock_why);
+  }
+  if (v.count("bandwidth")) {
     c.overrides.bandwidth_Bps = parse_bandwidth(v.at("bandwidth"), "--bandwidth", Unit::Required);
-  if (v.count("per-hop"))
+    if (*c.overrides.bandwidth_Bps < kMinWhatIfBandwidth_Bps)
+      throw UsageError("--bandwidth '" + v.at("bandwidth") + "': below 1 Bps" + clock_why);
+  }
+  if (v.count("per-hop")) {
     c.overrides.per_hop_s = parse_time(v.at("per-hop"), "--per-hop", Unit::Required);
-  if (v.count("cpu-scale")) c.overrides.cpu_scale = parse_positive(v.at("cpu-scale"), "cpu-scale");
+    if (*c.overrides.per_hop_s > kMaxWhatIfDelay_s)
+      throw UsageError("--per-hop '" + v.at("per-hop") + "': above 1 h" + clock_why);
+  }
+  if (v.count("cpu-scale")) {
+    c.overrides.cpu_scale = parse_positive(v.at("cpu-scale"), "cpu-scale");
+    // 1e-3 keeps a scaled cycle (25 ns and up) above the simulator's 1e-12 s timing precision.
+    if (*c.overrides.cpu_scale < 1e-3 || *c.overrides.cpu_scale > 1e3)
+      throw UsageError("--cpu-scale '" + v.at("cpu-scale") +
+                       "': outside 1e-3..1e3 (faster cycles fall below the simulator's timing "
+                       "precision; slower ones push the clock past 2^52 ns)");
+  }
   if (v.count("memory")) {
     c.overrides.memory_bytes = parse_bytes(v.at("memory"), "--memory", Unit::Required);
     if (!(*c.overrides.memory_bytes > 0))

@@ -8,6 +8,7 @@
 #include "geometry/camera.hpp"
 #include "scene/bezier.hpp"
 #include "scene/loaders.hpp"
+#include "scene/scene_range.hpp"
 #include "scene/text.hpp"
 #include "util/error.hpp"
 #include "util/image_size.hpp"
@@ -67,6 +68,7 @@ Scene load_scene(const std::string& path, const LoadOptions& opt) {
   // A JSON scene may say "objects": [] on purpose (an empty scene renders the background); a mesh
   // or scene file without a single triangle is more likely a mistake.
   if (s.triangles.empty() && !is_json) throw InputError(path, 0, "the scene has no triangles");
+  check_numeric_range(s);
   return s;
 }
 

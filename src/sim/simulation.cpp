@@ -92,6 +92,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
                      " models " + std::to_string(pm.nodes) + " nodes");
   apply_overrides(cfg.overrides, pm, e);
   const int P = pm.nodes;
+  if (algo.check_nodes) algo.check_nodes(options, P);
 
   std::vector<sg::Host*> hosts;
   for (int r = 0; r < P; ++r)
@@ -143,6 +144,16 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
     if (!finished[r] && (r < P || algo.uses_host))
       failure = (r < P ? "node " + std::to_string(r) : std::string("host computer")) +
                 ": deadlock (still waiting for a message when the simulation ended)";
+  // The clock is a double: beyond 2^52 ns (52 days, times --cost-scale) it no longer resolves a
+  // nanosecond, and compute phases (a CPU cycle is 25..63 ns) are rounded or vanish when added to
+  // it (a 1e300 s latency left every compute phase at 0 s). Such a run has no exact times to
+  // report.
+  const double clock_limit = 0x1p52 * 1e-9 * cfg.overrides.cost_scale.value_or(1.0);
+  if (failure.empty() && !(vtime <= clock_limit))
+    failure = "virtual time " + format_double(vtime) + " s is beyond " +
+              format_double(clock_limit) +
+              " s (2^52 ns), where the simulated clock no longer resolves a nanosecond and compute "
+              "times would be rounded; use faster what-if costs";
 
   SimResult res;
   res.ok = failure.empty();

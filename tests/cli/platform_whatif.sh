@@ -25,9 +25,9 @@ case "$a" in *"virtual time"*) ;; *) bad "run on the written platform: $a" ;; es
 [ "$a" = "$b" ] || bad "the written what-if platform and the flags differ"
 # One-way times on generated platforms: iPSC/860 cube of 1024 (10 hops: 75 + 9 x 10 us) and a
 # Volvox ring of 1000 (500 hops of 50 us, store-and-forward).
-t=$("$zcube" pingpong --machine ipsc860 --nodes 1024 --to 1023 --sizes 0 | awk '!/^#/ {print $(NF - 2), $NF}')
+t=$("$zcube" pingpong --machine ipsc860 --nodes 1024 --to 1023 --sizes 0B | awk '!/^#/ {print $(NF - 2), $NF}')
 [ "$t" = "10 165.000" ] || bad "1024-node cube: hops and one-way us '$t', want '10 165.000'"
-t=$("$zcube" pingpong --machine volvox --topology ring --nodes 1000 --to 500 --sizes 0 |
+t=$("$zcube" pingpong --machine volvox --topology ring --nodes 1000 --to 500 --sizes 0B |
   awk '!/^#/ {print $(NF - 2), $NF}')
 [ "$t" = "500 25000.000" ] || bad "1000-node ring: hops and one-way us '$t', want '500 25000.000'"
 [ $fail = 0 ] && echo "ok"

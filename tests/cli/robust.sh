@@ -55,8 +55,14 @@ done
 usage vertices-bogus "--vertices" "$zcube" run --algorithm elastic --vertices bogus
 usage packet-5 "--packet '5'" "$zcube" run --algorithm host-initiated --packet 5 --nodes 2
 usage output-file "--output" "$zcube" run --algorithm elastic --output x.json
-usage pingpong-units "--sizes" "$zcube" pingpong --sizes 1KiB,64KiB
-usage pingpong-huge "--sizes" "$zcube" pingpong --sizes 99999999999999999999
+ok pingpong-units "65536" "$zcube" pingpong --sizes 1KiB,64KiB
+usage pingpong-bare-number "--sizes '1024'" "$zcube" pingpong --sizes 1024
+usage pingpong-fraction "--sizes" "$zcube" pingpong --sizes 1.5B
+usage pingpong-huge "--sizes" "$zcube" pingpong --sizes 99999999999999999999B
+usage pingpong-from "--from 5" "$zcube" pingpong --nodes 4 --from 5
+usage pingpong-to-self "--to 2" "$zcube" pingpong --nodes 4 --from 2 --to 2
+usage pingpong-from-platform "--from 40" "$zcube" pingpong --machine "$src/platforms/ipsc2-16.xml" \
+  --from 40
 usage option-elsewhere "does not apply" "$zcube" run --algorithm sequential --lines strips
 for a in zbuf-exc pair-rs aapc-hbp; do
   usage "kurc-ring-$a" "hypercube" "$zcube" run --algorithm "$a" --topology ring --nodes 4
@@ -72,6 +78,54 @@ usage cost-scale-tiny "--cost-scale" "$zcube" run --cost-scale 1e-300 --size 16x
 ok frames-elastic "identical to the sequential renderer's: true" "$zcube" run --algorithm elastic \
   --frames 2 --nodes 4 --size 32x32
 ok pingpong-to "one_way_us" "$zcube" pingpong --nodes 4 --to 1,3
+
+# A platform file states its own topology: --topology beside it is refused, not ignored.
+usage topology-with-platform "--topology ring" "$zcube" run --machine "$src/platforms/ipsc2-16.xml" \
+  --topology ring --size 16x16
+
+# Magnitudes that break the simulated clock (a double): refused up front, or the run fails when
+# its virtual time leaves 2^52 ns (a 1e300 s latency made every compute phase 0 s).
+usage latency-1e300 "--latency '1e300s'" "$zcube" run --latency 1e300s --nodes 2 --size 16x16
+usage bandwidth-1e-9 "--bandwidth '1e-9Bps'" "$zcube" run --bandwidth 1e-9Bps --nodes 2 --size 16x16
+usage per-hop-1e300 "--per-hop" "$zcube" run --per-hop 1e300s --nodes 2 --size 16x16
+usage bandwidth-inf "--bandwidth" "$zcube" run --bandwidth 1e308GBps --nodes 2 --size 16x16
+usage cpu-scale-tiny "--cpu-scale" "$zcube" run --cpu-scale 1e-9 --size 16x16
+usage cpu-scale-huge "--cpu-scale" "$zcube" run --cpu-scale 1e9 --size 16x16
+failed clock-beyond-2^52ns "2^52 ns" "$zcube" run --bandwidth 1Bps --nodes 4 --algorithm zbuf-exc \
+  --size 1024x1024 --memory 64MiB
+ok clock-slowest-bandwidth "identical to the sequential renderer's: true" "$zcube" run \
+  --bandwidth 1Bps --nodes 2 --algorithm elastic --size 16x16
+
+# The renderer's numeric range (scenes/README.md): outside it a scene is refused naming the field;
+# at its edge (every coordinate times 2^61, the eye at 1.15e19) the parallel image is the
+# sequential one and the same as the unscaled scene's.
+range_scene() { # file scale-exponent fov: two objects and the camera, every coordinate x 2^k
+  awk -v k="$2" -v fov="$3" 'BEGIN { s = 2 ^ k; f = "%.17g"
+    printf "{\"camera\":{\"eye\":[" f "," f "," f "],\"target\":[0,0,0],\"fov\":%s},", s, 2 * s, 5 * s, fov
+    printf "\"objects\":[{\"type\":\"sphere\",\"transform\":{\"translate\":[" f ",0,0],\"scale\":" f "}},", 0.3 * s, s
+    printf "{\"type\":\"cube\",\"transform\":{\"translate\":[0," f "," f "],\"scale\":" f "}}]}\n", -s, -s, s / 2 }' >"$1"
+}
+range_scene "$tmp/unit.json" 0 40
+range_scene "$tmp/edge.json" 61 40
+range_scene "$tmp/fov.json" 0 1e-37
+echo '{"camera":{"eye":[1e308,0,5]},"objects":["cube"]}' >"$tmp/eye.json"
+echo '{"objects":[{"type":"cube","transform":{"scale":1e38}}]}' >"$tmp/vertex.json"
+usage range-fov "camera.fov" "$zcube" run --scene "$tmp/fov.json" --size 16x16
+usage range-eye "eye.json: camera.eye" "$zcube" run --scene "$tmp/eye.json" --size 16x16
+usage range-vertex "vertex.json: vertex 0 of object 0 (cube)" "$zcube" run --scene "$tmp/vertex.json"
+for a in elastic aapc-hbp node-initiated; do
+  ok "range-edge-$a" "identical to the sequential renderer's: true" "$zcube" run --algorithm "$a" \
+    --nodes 4 --size 48x32 --scene "$tmp/edge.json" --memory 64MiB
+done
+"$zcube" render --scene "$tmp/unit.json" --size 48x32 --image "$tmp/unit.png" >"$tmp/unit.txt"
+"$zcube" render --scene "$tmp/edge.json" --size 48x32 --image "$tmp/edge.png" >"$tmp/edge.txt"
+if [ "$(grep sha256 "$tmp/unit.txt")" != "$(grep sha256 "$tmp/edge.txt")" ] ||
+  ! grep -q sha256 "$tmp/unit.txt" || grep -q ' 0 final' "$tmp/unit.txt"; then
+  echo "FAIL range-edge-same-image: $(cat "$tmp/unit.txt" "$tmp/edge.txt")"
+  fail=1
+else
+  echo "ok   range-edge-same-image: $(grep -o '[0-9]* final' "$tmp/edge.txt")"
+fi
 
 # Unwritable outputs: refused before the simulation, or failing the run when the write fails.
 usage report-missing-dir "--report" "$zcube" run --size 16x16 --report "$tmp/nope/r.json"

@@ -20,7 +20,7 @@ namespace {
 nlohmann::json pingpong(const std::string& m, int P, Fidelity f, Topology t = Topology::Cube,
                         Overrides o = {}, const std::string& to = "1,3,7,15") {
   nlohmann::json all = {{"status", "ok"}, {"results", nlohmann::json::array()}};
-  for (const char* size : {"0", "1", "64", "100", "101", "1024", "65536"}) {
+  for (const char* size : {"0B", "1B", "64B", "100B", "101B", "1024B", "65536B"}) {
     SimConfig c = sim_config(m, P, t, f);
     c.algorithm = "pingpong";
     c.overrides = o;

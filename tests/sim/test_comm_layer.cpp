@@ -64,8 +64,8 @@ TEST(Units, SpeedsTheWaySimGridWritesThem) {
 TEST(PointToPoint, DcmCostGrowsByItsPerHopTermVolvoxByWholeSteps) {
   // iPSC/2: circuit switching, so a hop adds only the DCM's per-hop set-up (docs/machines.md), the
   // same for short and long messages.
-  auto dcm =
-      one_way(sim_config("ipsc2", 32, Topology::Cube, Fidelity::Circuit), "1,3,7,15,31", "64,4096");
+  auto dcm = one_way(sim_config("ipsc2", 32, Topology::Cube, Fidelity::Circuit), "1,3,7,15,31",
+                     "64B,4096B");
   const double per_hop = machine_spec("ipsc2").net.per_hop_s;
   ASSERT_GT(per_hop, 0);
   for (double m : {64.0, 4096.0})
@@ -74,7 +74,7 @@ TEST(PointToPoint, DcmCostGrowsByItsPerHopTermVolvoxByWholeSteps) {
                  "ipsc2, " + std::to_string(h) + " hops");
   // Volvox: every hop is a whole store-and-forward step.
   auto t800 = one_way(sim_config("volvox", 32, Topology::Cube, Fidelity::Circuit), "1,3,7,15,31",
-                      "64,4096");
+                      "64B,4096B");
   for (double m : {64.0, 4096.0})
     for (int h = 2; h <= 5; ++h)
       expect_rel(t800.at({m, h}), h * t800.at({m, 1}), 1e-12, "volvox");
@@ -85,12 +85,12 @@ TEST(Overrides, WhatIfFlagsChangeTheFormula) {
   c.overrides.latency_s = 1e-3;
   c.overrides.bandwidth_Bps = 1e6;
   c.overrides.per_hop_s = 50e-6;
-  auto t = one_way(c, "1,7", "10,1000");
+  auto t = one_way(c, "1,7", "10B,1000B");
   expect_rel(t.at({10.0, 1}), 1e-3 + 10e-6, 1e-12, "short");
   expect_rel(t.at({1000.0, 3}), 1e-3 + 1000e-6 + 2 * 50e-6, 1e-12, "long, 3 hops");
   // The flow model reads the bandwidth from its links: the override must reach them too.
   c.fidelity = Fidelity::Flow;
-  auto f = one_way(c, "7", "1000");
+  auto f = one_way(c, "7", "1000B");
   expect_rel(f.at({1000.0, 3}), 1e-3 + 1000e-6 + 2 * 50e-6, 1e-12, "flow");
   // --cpu-scale multiplies the CPU and nothing else.
   SimConfig s = sim_config("ipsc2", 1, Topology::Cube, Fidelity::Circuit);
@@ -133,7 +133,7 @@ TEST(Platforms, SimGridFiguresOfAUserEditedFileAreTheMachine) {
                        {"lat=\"10000ns\"", "lat=\"30us\""},
                        {"value=\"0:5.9239999999999995e-05:0;", "value=\"0:0.00105924:0;"}});
   SimConfig c = sim_config(path, 0, Topology::Cube, Fidelity::Circuit); // P from the file
-  auto t = one_way(c, "3", "10,1000");
+  auto t = one_way(c, "3", "10B,1000B");
   std::filesystem::remove(path);
   const double per_byte = 10 * n.per_byte_s, hop = 30e-6, envelope = 16 * (per_byte - n.per_byte_s);
   // start-up = smpi/or + lat + 16 bytes / bw: the edited latency and rate enter it as in SMPI.

@@ -29,7 +29,7 @@ for machine in ipsc2 ipsc860; do
     echo "smpirun failed on $machine: $(tail -c 400 "$tmp/smpi.err")"
     exit 1
   }
-  "$zcube" pingpong --machine "$plat" --to "${peers// /,}" --sizes "${sizes// /,}" \
+  "$zcube" pingpong --machine "$plat" --to "${peers// /,}" --sizes "$(echo $sizes | sed "s/ /B,/g")B" \
     >"$tmp/zcube.txt" 2>"$tmp/zcube.err" || {
     echo "zcube pingpong failed on $machine: $(head -c 300 "$tmp/zcube.err")"
     exit 1
