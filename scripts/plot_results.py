@@ -34,6 +34,7 @@ FLAG_LABELS = {"nodes": "nodes P", "latency": "message start-up (s)",
                "cpu-scale": "CPU cost multiplier", "memory": "node memory (B)",
                "cost-scale": "cost multiplier", "frames": "frames", "packet": "polygons per packet"}
 COLUMN_LABELS = {"virtual_s": "virtual time of the run (s)",
+                 "timed_s": "virtual time of the timed region (s)",
                  "speedup": "speed-up over the sequential run on 1 node",
                  "efficiency": "efficiency (speed-up / P)", "wall_s": "host wall time (s)",
                  "messages": "messages", "bytes": "bytes sent (B)",

@@ -53,9 +53,10 @@ static int cmd_sweep(std::vector<std::string> args) {
           ->capture_default_str();
   app.add_option("--plot-x", plot_x,
                  "flag on the plot's x axis (default: the first with several values)");
-  app.add_option("--plot-y", plot_y,
-                 "column on the plot's y axis: virtual_s, speedup, efficiency, wall_s, messages, "
-                 "bytes, concurrent_volume_bytes, load_imbalance or phase:<name>")
+  app.add_option(
+         "--plot-y", plot_y,
+         "column on the plot's y axis: virtual_s, timed_s, speedup, efficiency, wall_s, messages, "
+         "bytes, concurrent_volume_bytes, load_imbalance or phase:<name>")
       ->capture_default_str();
   app.add_option("--plot-format", plot_format, "png, svg or pdf")
       ->check(CLI::IsMember({"png", "svg", "pdf"}))
@@ -84,9 +85,10 @@ static int cmd_sweep(std::vector<std::string> args) {
   for (const auto& p : points)
     has_baseline = has_baseline || is_baseline(p);
   if (!plot_y.starts_with("phase:") && std::find(known.begin(), known.end(), plot_y) == known.end())
-    throw UsageError("--plot-y " + plot_y +
-                     ": not a sweep column (virtual_s, speedup, efficiency, wall_s, messages, "
-                     "bytes, concurrent_volume_bytes, load_imbalance or phase:<name>)");
+    throw UsageError(
+        "--plot-y " + plot_y +
+        ": not a sweep column (virtual_s, timed_s, speedup, efficiency, wall_s, messages, "
+        "bytes, concurrent_volume_bytes, load_imbalance or phase:<name>)");
   if ((plot_y == "speedup" || plot_y == "efficiency") && !has_baseline)
     throw UsageError("--plot-y " + plot_y +
                      ": the sweep has no sequential run on one node to compare with (add "

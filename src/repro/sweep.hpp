@@ -42,7 +42,8 @@ using BatchRunner = std::function<std::vector<nlohmann::json>(const std::vector<
 std::vector<nlohmann::json> run_points(const std::vector<SweepPoint>& points,
                                        const BatchRunner& runner);
 
-// One row per point: the axis values, then status, error, virtual_s, wall_s, messages, bytes,
+// One row per point: the axis values, then status, error, virtual_s, timed_s (the paper's timed
+// region when the algorithm marks one, else virtual_s), wall_s, messages, bytes,
 // concurrent_volume_bytes, load_imbalance, image_sha256, identical, and one "phase:<name>" column
 // (max over nodes, s) per phase any point has.
 nlohmann::json sweep_rows(const std::vector<SweepAxis>& axes, const std::vector<SweepPoint>& points,
@@ -55,8 +56,9 @@ bool is_baseline(const SweepPoint& p);
 // (zcube sweep --baseline). Its values on the algorithm option axes are "".
 void add_baselines(const std::vector<SweepAxis>& axes, std::vector<SweepPoint>& points,
                    const std::string& scene);
-// Adds speedup = T(baseline) / T(point) and efficiency = speedup / nodes to every row (null where
-// there is no baseline or a run failed), when any point is a baseline; returns whether it did.
+// Adds speedup = T(baseline) / T(point), T the timed region (timed_s), and efficiency = speedup /
+// nodes to every row (null where there is no baseline or a run failed), when any point is a
+// baseline; returns whether it did.
 bool add_speedups(const std::vector<SweepPoint>& points, const std::vector<nlohmann::json>& reports,
                   nlohmann::json& rows);
 

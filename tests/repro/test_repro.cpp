@@ -364,6 +364,31 @@ TEST(Sweep, SpeedupsAgainstTheMatchingSequentialRun) {
   EXPECT_TRUE(p2[2].config.has_value()) << p2[2].error;
 }
 
+// A speed-up divides the timed region (elastic's per-picture loop, docs/papers.md), as zcube run's
+// paper line does; a --timed axis is an option of the algorithm, so the baseline does not get it.
+TEST(Sweep, SpeedupsDivideTheTimedRegionAndTimedIsAnAlgorithmOption) {
+  const std::vector<SweepAxis> axes = {
+      {"algorithm", {"elastic"}}, {"nodes", {"4"}}, {"timed", {"picture", "all"}}};
+  auto pts = expand_sweep(axes, kRoot + "/scenes/teapot.json");
+  ASSERT_EQ(pts.size(), 2u);
+  add_baselines(axes, pts, kRoot + "/scenes/teapot.json");
+  ASSERT_EQ(pts.size(), 3u); // one baseline serves both --timed values
+  ASSERT_TRUE(is_baseline(pts[2]));
+  ASSERT_TRUE(pts[2].config.has_value()) << pts[2].error;
+  EXPECT_EQ(pts[2].values.at("timed"), "");
+  const std::vector<nlohmann::json> reps = {
+      {{"status", "ok"}, {"nodes", 4}, {"virtual_time_s", 3.0}, {"timed_s", 2.0}},
+      {{"status", "ok"}, {"nodes", 4}, {"virtual_time_s", 3.0}, {"timed_s", 2.5}},
+      {{"status", "ok"}, {"nodes", 1}, {"virtual_time_s", 8.0}}};
+  auto rows = sweep_rows(axes, pts, reps);
+  ASSERT_TRUE(add_speedups(pts, reps, rows));
+  EXPECT_DOUBLE_EQ(rows[0]["virtual_s"].get<double>(), 3.0);
+  EXPECT_DOUBLE_EQ(rows[0]["timed_s"].get<double>(), 2.0);
+  EXPECT_DOUBLE_EQ(rows[0]["speedup"].get<double>(), 4.0);
+  EXPECT_DOUBLE_EQ(rows[1]["speedup"].get<double>(), 3.2);
+  EXPECT_DOUBLE_EQ(rows[2]["timed_s"].get<double>(), 8.0); // no timed region: the whole run
+}
+
 // The committed results/ are a real run of `zcube reproduce`: a few points re-simulated now give
 // the committed numbers (to their printed precision).
 TEST(Reproduce, CommittedResultsAreCurrentForASubset) {
