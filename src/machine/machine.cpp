@@ -103,9 +103,9 @@ std::vector<MachineSpec> make_specs() {
     MachineSpec m;
     m.name = "ipsc2";
     m.description = "Intel iPSC/2: 80386+80387 16 MHz nodes, DCM circuit-switched hypercube";
-    m.memory_bytes = 4.0 * 1048576;     // 4 MB base (MACHINES.md)
+    m.memory_bytes = 4.0 * 1048576;     // 4 MB base (docs/machines.md)
     m.os_resident_bytes = 512.0 * 1024; // NX/2 + program: 256 KiB..1 MiB (docs/memory.md)
-    m.net.startup_short_s = 275e-6;     // Blazek ch. IV, read as microseconds (MACHINES.md)
+    m.net.startup_short_s = 275e-6;     // Blazek ch. IV, read as microseconds (docs/machines.md)
     m.net.startup_long_s = 275e-6;
     m.net.short_max_bytes = 100;
     m.net.per_byte_s = 1.0 / 2.8e6; // 2.8 MB/s channel (Nugent 1988)
@@ -113,7 +113,7 @@ std::vector<MachineSpec> make_specs() {
     // the low end, as the DCM routes the header in hardware (docs/machines.md).
     m.net.per_hop_s = 10e-6;
     m.net.switching = Switching::Circuit;
-    m.net.host_startup_s = 1e-3;  // SRM link: assumption, Ethernet-class
+    m.net.host_startup_s = 1e-3;  // SRM link: assumption, Ethernet-class (docs/machines.md)
     m.net.host_per_byte_s = 1e-6; // ~1 MB/s: assumption
     m.cpu = "i80386";
     m.cost = i386_costs();
@@ -126,7 +126,7 @@ std::vector<MachineSpec> make_specs() {
     m.description = "Intel iPSC/860: i860 XR 40 MHz nodes, DCM circuit-switched hypercube";
     m.memory_bytes = 8.0 * 1048576;      // ORNL CSEP
     m.os_resident_bytes = 1024.0 * 1024; // NX + program: 0.5..2 MiB (docs/memory.md)
-    m.net.startup_short_s = 75e-6;       // Bokhari 1990 (MACHINES.md, low-medium confidence)
+    m.net.startup_short_s = 75e-6;       // Bokhari 1990 (docs/machines.md, low-medium confidence)
     m.net.startup_long_s = 136e-6;
     m.net.short_max_bytes = 100;
     m.net.per_byte_s = 0.36e-6;
@@ -145,7 +145,7 @@ std::vector<MachineSpec> make_specs() {
     m.description = "Archipel Volvox: i860 compute + T800 transputer links, store-and-forward";
     m.memory_bytes = 8.0 * 1048576;      // assumption: i860 board as the iPSC/860's
     m.os_resident_bytes = 1024.0 * 1024; // assumption: as the iPSC/860's NX (docs/memory.md)
-    m.net.startup_short_s = 50e-6;       // assumption (MACHINES.md): software overhead per hop
+    m.net.startup_short_s = 50e-6;       // assumption (docs/machines.md): software overhead per hop
     m.net.startup_long_s = 50e-6;
     m.net.short_max_bytes = 100;
     m.net.per_byte_s = 1.0 / 1.7e6; // T800 link, ~1.7 MB/s achieved one way
