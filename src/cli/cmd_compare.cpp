@@ -16,10 +16,12 @@ static int cmd_compare(std::vector<std::string> args) {
   app.add_option("--predicted", predicted, "report of the simulation")->required();
   if (int rc = parse(app, args); rc >= 0) return rc;
   const auto m = read_report(measured), p = read_report(predicted);
-  std::cout << m.value("algorithm", "?") << ", " << m.value("nodes", 0) << " nodes: measured on "
-            << m.value("machine", "?") << ", predicted on " << p.value("platform", "?") << " ("
-            << p.value("fidelity", "?") << ")\n\n"
-            << compare_reports(m, p).markdown();
+  const Table t = compare_reports(m, p); // refuses mismatched reports before printing anything
+  std::cout << m.value("algorithm", "?") << ", " << m.value("nodes", 0) << " nodes: "
+            << (m.value("measured", false) ? "measured" : "simulated (not a measured report)")
+            << " on " << m.value("machine", "?") << ", predicted on " << p.value("platform", "?")
+            << " (" << p.value("fidelity", "?") << ")\n\n"
+            << t.markdown();
   return 0;
 }
 

@@ -72,6 +72,8 @@ static int finish(const SimResult& r, const std::string& report, const std::stri
             << j["topology"].get<std::string>() << ", " << j["fidelity"].get<std::string>()
             << "): " << (j.value("measured", false) ? "measured" : "virtual") << " time "
             << j["virtual_time_s"].get<double>() << " s\n";
+  if (j.contains("timed_s")) // what the speed-ups divide (docs/papers.md)
+    std::cout << "  timed region (the paper's)   " << j["timed_s"].get<double>() << " s\n";
   for (const auto& p : j["phases"])
     std::cout << "  " << std::left << std::setw(28) << p["name"].get<std::string>() << " max "
               << p["max_s"].get<double>() << " s\n";

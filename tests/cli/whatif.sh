@@ -187,4 +187,20 @@ expect reproduce-full-duration-consistent $?
 ! grep -qi "uncalibrated placeholder" platforms/README.md
 expect platforms-readme-not-stale $?
 
+# --- the timed region is printed and compared (docs/papers.md) ---------------------------------
+el=(--algorithm elastic --machine ipsc860 --nodes 4 --size 64x64)
+"$zcube" run "${el[@]}" --report "$tmp/el.json" >"$tmp/el.out" 2>&1
+rc=$?
+grep -q "^  timed region (the paper's) " "$tmp/el.out"
+expect run-prints-timed-region $(( rc != 0 || $? != 0 )) "$(cat "$tmp/el.out")"
+"$zcube" run "${el[@]}" --fidelity analytic --report "$tmp/el2.json" >/dev/null 2>&1
+"$zcube" compare --measured "$tmp/el.json" --predicted "$tmp/el2.json" >"$tmp/cmp" 2>&1
+rc=$?
+grep -q "^| timed |" "$tmp/cmp" && grep -q "simulated (not a measured report)" "$tmp/cmp"
+expect compare-timed-row $(( rc != 0 || $? != 0 )) "$(cat "$tmp/cmp")"
+"$zcube" run --algorithm pair-rs --size 64x64 --nodes 4 --report "$tmp/pr.json" >/dev/null 2>&1
+usage_error compare-different-algorithms "different algorithms" \
+  "$zcube" compare --measured "$tmp/pr.json" --predicted "$tmp/el.json"
+expect compare-refuses-before-printing $([ ! -s "$tmp/out" ]; echo $?) "$(cat "$tmp/out")"
+
 exit $fail
