@@ -12,7 +12,7 @@ cd "$(dirname "$0")/.."
 secs=${1:-600}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(obj mtl json sdl bezier)
+[ ${#targets[@]} -gt 0 ] || targets=(obj mtl json sdl bezier platform)
 CXX=${CXX:-clang++} cmake -S tests/fuzz -B build-fuzz -DZCUBE_SOURCE_DIR="$PWD" \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null || exit 2
 nice -n 19 cmake --build build-fuzz -j2 >/dev/null || exit 2

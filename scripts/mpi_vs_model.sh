@@ -7,9 +7,8 @@ cd "$(dirname "$0")/.."
 zcube=$(realpath "${1:-build/zcube}")
 out=${2:-results/mpi}
 mkdir -p "$out"
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-export OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none
-export OMPI_MCA_hwloc_base_binding_policy=none
+# shellcheck source=openmpi_env.sh
+. scripts/openmpi_env.sh
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 cores=$(nproc)

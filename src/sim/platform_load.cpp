@@ -11,6 +11,7 @@
 #include <fstream>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include <xbt/config.hpp>
@@ -85,6 +86,26 @@ void check_clusters(const std::string& xml, const std::string& label) {
   }
 }
 
+// SimGrid also aborts ("Not a valid model!") on a zone whose routing it does not know
+// (routing="Full   ", found by tests/fuzz/targets/fuzz_platform.cpp).
+void check_zones(const std::string& xml, const std::string& label) {
+  static const std::regex tag(R"(<zone\b[^>]*>)"),
+      routing(R"re(\brouting\s*=\s*(?:"([^"]*)"|'([^']*)'))re");
+  static const std::set<std::string> known = {"Cluster", "Dijkstra", "DijkstraCache", "Floyd",
+                                              "Full",    "None",     "Vivaldi",       "Wifi"};
+  for (std::sregex_iterator t(xml.begin(), xml.end(), tag), end; t != end; ++t) {
+    const std::string text = t->str();
+    std::smatch m;
+    if (!std::regex_search(text, m, routing)) continue;
+    const std::string r = m[1].matched ? m[1].str() : m[2].str();
+    if (!known.count(r))
+      throw InputError(label, 0,
+                       "zone routing=\"" + r +
+                           "\": not a routing SimGrid knows (Full, Floyd, Dijkstra, DijkstraCache, "
+                           "None, Vivaldi, Cluster, Wifi)");
+  }
+}
+
 void load(sg::Engine& e, const std::string& path, const std::string& label) {
   try {
     e.load_platform(path);
@@ -120,6 +141,7 @@ void load_platform_file(sg::Engine& e, const std::string& path) {
   text << f.rdbuf();
   if (!f) throw InputError(path, 0, "cannot read the file");
   check_clusters(text.str(), path);
+  check_zones(text.str(), path);
   load(e, path, path);
 }
 

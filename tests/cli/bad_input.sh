@@ -53,6 +53,7 @@ for f in "$data"/bad_platform/*.xml; do
   memory_*) attr='zcube.node_memory' ;;
   nodes_*) attr='radical\|topo_parameters\|zcube.topology' ;;
   switching_*) attr='zcube.switching' ;;
+  routing_*) attr='routing' ;;
   *) attr='.' ;;
   esac
   check "platform $name" "$name: .*\($attr\)" "$zcube" run --machine "$f" --algorithm sequential --size 8x8

@@ -3,9 +3,8 @@
 # usage: mpi_tests.sh ZCUBE MPIRUN SOURCE_DIR comm|images|sweep|probe
 set -u
 zcube=$1 mpirun=$2 src=$3 what=$4
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-export OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none
-export OMPI_MCA_rmaps_base_oversubscribe=1 OMPI_MCA_hwloc_base_binding_policy=none
+# shellcheck source=../../scripts/openmpi_env.sh
+. "$src/scripts/openmpi_env.sh"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail=0

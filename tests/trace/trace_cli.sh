@@ -40,9 +40,9 @@ for flag in "--trace $tmp/x.txt" "--gantt $tmp/x.jpg"; do
   [ "$(wc -l <"$tmp/out")" = 1 ] || bad "$flag: not one line: $(cat "$tmp/out")"
 done
 
+# shellcheck source=../../scripts/openmpi_env.sh
+. "$src/scripts/openmpi_env.sh"
 if [ -n "$mpirun" ] && "$mpirun" --oversubscribe -np 2 /bin/true >/dev/null 2>&1; then
-  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-  export OMPI_MCA_btl=self,vader OMPI_MCA_btl_vader_single_copy_mechanism=none
   "$mpirun" --oversubscribe -np 2 "$zcube" run --backend mpi --algorithm pair-rs \
     --scene "$src/scenes/kurc/2pot.json" --size 96x96 --trace "$tmp/m.json" \
     --report "$tmp/m.report.json" >"$tmp/out" 2>&1 || bad "mpi --trace: $(tail -2 "$tmp/out")"
