@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "algo/algorithm.hpp"
 #include "repro/reproduce.hpp"
 #include "repro/table.hpp"
 #include "util/error.hpp"
@@ -113,14 +114,14 @@ nlohmann::json sweep_rows(const std::vector<SweepAxis>& axes, const std::vector<
 
 namespace {
 
-// The flags that choose the parallel program, not the machine or the scene: a baseline (the
-// sequential run on one node) shares every other flag with the points it serves.
-const char* const kAlgorithmOptions[] = {"vertices", "output", "timed",
-                                         "packet",   "lines",  "forward"};
-
+// The flags some algorithm declares as its own option (--vertices, --timed, --packet, ...): they
+// choose the parallel program, not the machine or the scene, so a baseline (the sequential run on
+// one node) shares every other flag with the points it serves.
 bool algorithm_option(const std::string& flag) {
-  return std::find(std::begin(kAlgorithmOptions), std::end(kAlgorithmOptions), flag) !=
-         std::end(kAlgorithmOptions);
+  for (const auto& a : algorithms())
+    for (const auto& o : a.options)
+      if (o.name == flag) return true;
+  return false;
 }
 
 bool algorithm_axis(const std::string& flag) {
@@ -144,8 +145,8 @@ std::map<std::string, std::string> baseline_key(const SweepPoint& p) {
 
 bool is_baseline(const SweepPoint& p) {
   bool options = false;
-  for (const char* f : kAlgorithmOptions)
-    options = options || !value_of(p, f, "").empty();
+  for (const auto& [f, v] : p.values)
+    options = options || (algorithm_option(f) && !v.empty());
   return value_of(p, "algorithm", "sequential") == "sequential" &&
          value_of(p, "nodes", "1") == "1" && !options;
 }
