@@ -8,8 +8,8 @@ reference line of slope 1).
     bench/sim_scaling.py [--zcube build/zcube] [--before OLD_ZCUBE] [--max-nodes 1024]
                          [--out results/scaling] [--plot-only]
 
---before measures the goals of another binary too, just before this one's (the same load), and
-writes both columns. Wall times are host wall-clock: on a shared machine compare runs made side
+--before measures the goals of another binary too, each run alternating with this one's (the same
+load), and writes both columns. Wall times are host wall-clock: on a shared machine compare runs made side
 by side, and prefer the minimum of repeated runs (the least disturbed).
 """
 import argparse
@@ -29,7 +29,7 @@ CASES = [  # algorithm, scene, size, extra flags
 ]
 
 
-def timed(cmd):
+def timed(cmd, may_fail=False):
     """Runs cmd; returns (process wall seconds, peak RSS bytes, CPU seconds)."""
     t0 = time.perf_counter()
     p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
@@ -37,7 +37,7 @@ def timed(cmd):
     wall = time.perf_counter() - t0
     err = p.stderr.read().decode()
     p.stderr.close()
-    if status != 0:
+    if status != 0 and not may_fail:
         sys.exit(f"{' '.join(cmd)} failed: {err.strip()}")
     return wall, ru.ru_maxrss * 1024, ru.ru_utime + ru.ru_stime
 
@@ -46,7 +46,7 @@ def run(zcube, algo, scene, size, extra, nodes):
     with tempfile.NamedTemporaryFile(suffix=".json") as rep:
         cmd = [zcube, "run", "--algorithm", algo, "--machine", "ipsc860", "--nodes", str(nodes),
                "--scene", scene, "--size", size, "--report", rep.name] + extra
-        wall, rss, cpu = timed(cmd)
+        wall, rss, cpu = timed(cmd, may_fail=True)  # a run out of node memory is a row too
         r = json.load(open(rep.name))
     messages = r["communication"]["messages"] if "communication" in r else 0
     sim = r["host"]["wall_time_s"]
@@ -58,37 +58,52 @@ def run(zcube, algo, scene, size, extra, nodes):
             "wall_us_per_message": 1e6 * sim / messages if messages else ""}
 
 
-def best_of(n, f):
-    return min(f() for _ in range(n))
+def goals(binaries, repeat):
+    """The issue's goals for each binary, each measurement alternating between the binaries (the
+    same load for all) and the least disturbed of `repeat` runs kept (a third as many for the
+    1024-node runs)."""
+    g = {z: {} for z in binaries}
+    big = max(1, repeat // 3)
 
+    def each(n, measure, keep):
+        """measure(z) -> value, n times for every binary in turn; keep(values) -> the result."""
+        got = {z: [] for z in binaries}
+        for _ in range(n):
+            for z in binaries:
+                got[z].append(measure(z))
+        return {z: keep(v) for z, v in got.items()}
 
-def goals(zcube, repeat):
-    """The issue's goals, each as the measured value and its bound."""
-    g = {}
-    g["render_bone_512_s"] = best_of(repeat, lambda: timed(
-        [zcube, "render", "--scene", "scenes/bone.json", "--size", "512x512",
-         "--image", os.path.join(tempfile.gettempdir(), "zcube_scaling_bone.png")])[0])
-    el = [run(zcube, *CASES[0], 1024) for _ in range(max(1, repeat // 3))]
-    g["elastic_1024_s"] = min(r["process_wall_s"] for r in el)
-    g["elastic_1024_over_render"] = g["elastic_1024_s"] / g["render_bone_512_s"]
-    g["elastic_1024_peak_gb"] = max(r["peak_rss_mb"] for r in el) / 1024
+    png = os.path.join(tempfile.gettempdir(), "zcube_scaling_bone.png")
+    render = each(repeat, lambda z: timed([z, "render", "--scene", "scenes/bone.json", "--size",
+                                           "512x512", "--image", png])[0], min)
+    elastic = each(big, lambda z: run(z, *CASES[0], 1024), lambda v: v)
+    for z in binaries:
+        g[z]["render_bone_512_s"] = render[z]
+        g[z]["elastic_1024_s"] = min(r["process_wall_s"] for r in elastic[z])
+        g[z]["elastic_1024_cpu_s"] = min(r["process_cpu_s"] for r in elastic[z])
+        g[z]["elastic_1024_over_render"] = g[z]["elastic_1024_s"] / render[z]
+        g[z]["elastic_1024_peak_gb"] = max(r["peak_rss_mb"] for r in elastic[z]) / 1024
+    fastest = lambda v: min(v, key=lambda r: r["wall_s"])
     for p in (256, 1024):
-        a = min((run(zcube, *CASES[1], p) for _ in range(max(1, repeat // 3))),
-                key=lambda r: r["wall_s"])
-        g[f"aapc_hbp_{p}_messages_per_s"] = a["messages_per_s"]
+        a = each(repeat if p < 1024 else big, lambda z: run(z, *CASES[1], p), fastest)
+        for z in binaries:
+            g[z][f"aapc_hbp_{p}_messages_per_s"] = a[z]["messages_per_s"]
+            if p == 1024:
+                g[z]["aapc_hbp_1024_cpu_s"] = a[z]["process_cpu_s"]
     for algo in ("elastic", "aapc-hbp"):
         case = next(c for c in CASES if c[0] == algo)
-        lo = min((run(zcube, *case, 32) for _ in range(repeat)), key=lambda r: r["wall_s"])
-        hi = run(zcube, *case, 1024)
-        g[f"{algo}_us_per_message_1024_over_32"] = (hi["wall_us_per_message"] /
-                                                     lo["wall_us_per_message"])
-    g["run_list_ms"] = 1e3 * best_of(repeat, lambda: timed([zcube, "run", "--list"])[0])
-    ratios = []
-    for _ in range(repeat):
-        r = run(zcube, "aapc-hbp", "scenes/kurc/1pot.json", "400x400", [], 16)
-        ratios.append(r["process_wall_s"] / r["wall_s"])
-    g["kurc16_process_over_simulation"] = min(ratios)
-    g["kurc16_process_over_simulation_median"] = statistics.median(ratios)
+        lo = each(repeat, lambda z: run(z, *case, 32), fastest)
+        hi = each(big, lambda z: run(z, *case, 1024), fastest)
+        for z in binaries:
+            g[z][f"{algo}_us_per_message_1024_over_32"] = (hi[z]["wall_us_per_message"] /
+                                                            lo[z]["wall_us_per_message"])
+    lst = each(repeat, lambda z: timed([z, "run", "--list"])[0], min)
+    kurc = each(repeat, lambda z: run(z, "aapc-hbp", "scenes/kurc/1pot.json", "400x400", [], 16),
+                lambda v: sorted(r["process_wall_s"] / r["wall_s"] for r in v))
+    for z in binaries:
+        g[z]["run_list_ms"] = 1e3 * lst[z]
+        g[z]["kurc16_process_over_simulation"] = kurc[z][0]
+        g[z]["kurc16_process_over_simulation_median"] = statistics.median(kurc[z])
     return g
 
 
@@ -141,7 +156,8 @@ def main():
     ap.add_argument("--zcube", default="build/zcube")
     ap.add_argument("--before", help="another zcube binary whose goals are measured alongside")
     ap.add_argument("--max-nodes", type=int, default=1024)
-    ap.add_argument("--repeat", type=int, default=9, help="runs of each goal's short commands")
+    ap.add_argument("--repeat", type=int, default=9,
+                    help="runs of each goal's short commands (a third as many at 1024 nodes)")
     ap.add_argument("--out", default="results/scaling")
     ap.add_argument("--plot-only", action="store_true", help="redraw from the CSV in --out")
     a = ap.parse_args()
@@ -165,8 +181,8 @@ def main():
         w.writerows(rows)
     plot(rows, a.out)
     if a.max_nodes >= 1024:
-        before = goals(a.before, a.repeat) if a.before else None
-        after = goals(a.zcube, a.repeat)
+        g = goals([a.before, a.zcube] if a.before else [a.zcube], a.repeat)
+        before, after = g.get(a.before), g[a.zcube]
         write_goals(a.out, after, before)
         print(json.dumps({"before": before, "after": after}, indent=1))
     print("load average at the end:", os.getloadavg(), file=sys.stderr)
