@@ -7,8 +7,8 @@ usage: plot_gantt.py REPORT.json OUT.png|OUT.svg|OUT.pdf [REPORT.json OUT ...]
 REPORT.json is a report with a "timeline" (zcube run --trace/--gantt/--report). Each row shows the
 node's phase (upper band, one colour per phase, legend) and what it does (lower band: compute,
 send, wait, idle); messages are lines from sender (at send start) to receiver (at arrival), thinned
-when there are more than MAX_MESSAGES; beneath, a utilisation strip counts the nodes computing and
-communicating over time. Up to MAX_EXACT_ROWS rows every interval is drawn; above, each row is
+when there are more than MAX_MESSAGES; beneath, a utilisation strip counts the nodes computing, sending and
+waiting for a message over time. Up to MAX_EXACT_ROWS rows every interval is drawn; above, each row is
 binned into TIME_BINS columns (the most frequent activity and phase of each bin), so 1024 nodes
 stay one picture. PNGs carry their row layout in a text chunk "zcube-gantt" (pixel rows of every
 node), which tests read back.
@@ -109,34 +109,36 @@ def draw_messages(ax, msgs, row_of):
 
 
 def utilisation(ax, tracks, total):
-    # Nodes computing, and above them nodes communicating (send or wait), over time (stacked steps).
+    # Nodes computing, sending and waiting for a message over time (stacked steps). Waiting is shown
+    # apart from sending: a node blocked in a receive is idle for want of data, not communicating.
+    kinds = ("compute", "send", "wait")
     ev = []
     for t in tracks:
         for k, b, e in t["acts"]:
-            if k != "idle":
-                c, m = (1, 0) if k == "compute" else (0, 1)
-                ev += [(b, c, m), (e, -c, -m)]
+            if k in kinds:
+                i = kinds.index(k)
+                ev += [(b, i, 1), (e, i, -1)]
     ev.sort()
-    xs, comp, comm = [0.0], [0], [0]
-    c = m = 0
-    for x, dc, dm in ev:
-        c, m = c + dc, m + dm
+    xs, counts = [0.0], [[0, 0, 0]]
+    now = [0, 0, 0]
+    for x, i, d in ev:
+        now[i] += d
         if x == xs[-1]:
-            comp[-1], comm[-1] = c, m
+            counts[-1] = list(now)
         else:
             xs.append(x)
-            comp.append(c)
-            comm.append(m)
+            counts.append(list(now))
     xs.append(total)
-    comp.append(c)
-    comm.append(m)
-    xs, comp, comm = np.array(xs), np.array(comp), np.array(comm)
-    ax.fill_between(xs, 0, comp, step="post", color=ACTIVITY_COLOURS["compute"], linewidth=0, label="computing")
-    ax.fill_between(xs, comp, comp + comm, step="post", color=ACTIVITY_COLOURS["send"], alpha=0.55, linewidth=0,
-                    label="communicating")
+    counts.append(list(now))
+    xs, counts = np.array(xs), np.array(counts)
+    base = np.zeros(len(xs))
+    for i, (k, label) in enumerate(zip(kinds, ("computing", "sending", "waiting for a message"))):
+        ax.fill_between(xs, base, base + counts[:, i], step="post", color=ACTIVITY_COLOURS[k],
+                        alpha=1.0 if k == "compute" else 0.6, linewidth=0, label=label)
+        base = base + counts[:, i]
     ax.axhline(len(tracks), color="0.5", linewidth=0.6, linestyle=":")
     ax.set_ylim(0, len(tracks) * 1.08 + 0.2)
-    ax.set_ylabel("nodes busy")
+    ax.set_ylabel("nodes")
     ax.legend(loc="upper left", bbox_to_anchor=(1.005, 1.0), fontsize=7, frameon=False)
 
 

@@ -31,7 +31,7 @@ std::string gantt_markdown(const std::vector<GanttChart>& charts) {
   std::string md = "\n## Space-time diagrams\n\n"
                    "One row per node (and the host computer): the phase above, what the node does "
                    "below (compute, send, wait, idle), messages as lines from sender to receiver, "
-                   "and the number of nodes busy beneath (`zcube run --gantt`, "
+                   "and the nodes computing, sending and waiting beneath (`zcube run --gantt`, "
                    "scripts/plot_gantt.py).\n\n";
   for (const auto& g : charts)
     ((((md += "- ") += g.caption) += ": [") += g.file) += "](" + g.file + ")\n";
