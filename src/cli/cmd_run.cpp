@@ -87,7 +87,9 @@ static int finish(const SimResult& r, const std::string& report, const std::stri
                   << 100 * f["rel_error"].get<double>() << std::noshowpos << " %)";
       std::cout << "\n";
     }
-  if (j["image"].contains("identical_to_sequential"))
+  if (j["image"].contains("sha256") && j["image"]["sha256"].is_null())
+    std::cout << "image: none (" << j["algorithm"].get<std::string>() << " draws no picture)\n";
+  else if (j["image"].contains("identical_to_sequential"))
     std::cout << "image identical to the sequential renderer's: "
               << j["image"]["identical_to_sequential"] << "\n";
   std::cout << "host wall time " << j["host"]["wall_time_s"].get<double>() << " s\n";

@@ -78,6 +78,9 @@ usage cost-scale-tiny "--cost-scale" "$zcube" run --cost-scale 1e-300 --size 16x
 ok frames-elastic "identical to the sequential renderer's: true" "$zcube" run --algorithm elastic \
   --frames 2 --nodes 4 --size 32x32
 ok pingpong-to "one_way_us" "$zcube" pingpong --nodes 4 --to 1,3
+# Algorithms that draw no picture say so instead of "identical to the sequential renderer's: false".
+ok comm-check-no-image "image: none (comm-check draws no picture)" "$zcube" run \
+  --algorithm comm-check --nodes 4 --size 16x16
 
 # A platform file states its own topology: --topology beside it is refused, not ignored.
 usage topology-with-platform "--topology ring" "$zcube" run --machine "$src/platforms/ipsc2-16.xml" \
