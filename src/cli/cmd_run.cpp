@@ -79,7 +79,9 @@ static int finish(const SimResult& r, const std::string& report, const std::stri
               << p["max_s"].get<double>() << " s\n";
   if (j.contains("paper"))
     for (const auto& f : j["paper"]) {
-      std::cout << "paper: " << f["source"].get<std::string>() << ": "
+      std::cout << (f.value("what_if", false) ? "paper (what-ifs in force, not its machine): "
+                                              : "paper: ")
+                << f["source"].get<std::string>() << ": "
                 << (f.contains("phase") ? f["phase"].get<std::string>() + " " : "")
                 << f["quantity"].get<std::string>() << " " << f["paper"].get<double>();
       if (f.contains("predicted"))

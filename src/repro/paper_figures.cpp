@@ -113,6 +113,10 @@ nlohmann::json paper_figures_for(const nlohmann::json& r, std::optional<double> 
     }
     out.push_back(e);
   }
+  // A what-if run is compared with the paper too, but is not the paper's machine: say so.
+  if (r.contains("what_if") && r["what_if"].is_object() && !r["what_if"].empty())
+    for (auto& e : out)
+      e["what_if"] = true;
   return out;
 }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "algo/algorithm.hpp"
 #include "geometry/camera_path.hpp"
 #include "raster/image_io.hpp"
 #include "raster/renderer.hpp"
@@ -61,7 +62,13 @@ void add_run_header(nlohmann::json& j, const RunHeader& h, const SimConfig& cfg,
   j["topology"] = h.topology;
   j["fidelity"] = h.fidelity;
   j["algorithm"] = algorithm;
-  j["options"] = cfg.options.values;
+  // Every option of the algorithm, the defaults included: a report says which variant ran.
+  nlohmann::json options = cfg.options.values;
+  for (const auto& a : algorithms()) // a test's own algorithm is not registered: none
+    if (a.name == algorithm)
+      for (const auto& o : a.options)
+        if (!options.contains(o.name)) options[o.name] = o.default_value;
+  j["options"] = options;
   j["frames"] = cfg.options.frames;
   j["scene"] = {{"path", h.scene_path},
                 {"triangles", scene.triangles.size()},

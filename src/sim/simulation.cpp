@@ -28,6 +28,31 @@ namespace zc {
 
 namespace sg = simgrid::s4u;
 
+namespace {
+
+// What produced the report's times besides the network figures: the host link, every counted
+// operation's CPU cost on node 0 (what-ifs applied; docs/machines.md gives each one's source and
+// range), and the what-if flags in force (empty when none), so that a report speaks for itself.
+void add_cpu_and_what_ifs(nlohmann::json& j, const PlatformModel& pm, const Overrides& o) {
+  j["model"]["host_startup_s"] = pm.net.host_startup_s;
+  j["model"]["host_per_byte_s"] = pm.net.host_per_byte_s;
+  CostTable node0 = pm.cost.empty() ? CostTable{} : pm.cost.front();
+  nlohmann::json cpu = nlohmann::json::object();
+  for (const auto& [name, v] : node0.fields())
+    cpu[name.starts_with("cost_") ? name.substr(5) : name] = *v;
+  j["model"]["cpu_seconds"] = cpu;
+  nlohmann::json w = nlohmann::json::object();
+  if (o.latency_s) w["latency_s"] = *o.latency_s;
+  if (o.bandwidth_Bps) w["bandwidth_Bps"] = *o.bandwidth_Bps;
+  if (o.per_hop_s) w["per_hop_s"] = *o.per_hop_s;
+  if (o.cpu_scale) w["cpu_scale"] = *o.cpu_scale;
+  if (o.memory_bytes) w["memory_bytes"] = *o.memory_bytes;
+  if (o.cost_scale) w["cost_scale"] = *o.cost_scale;
+  j["what_if"] = w;
+}
+
+} // namespace
+
 SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   const auto wall0 = std::chrono::steady_clock::now();
   const Algorithm& algo = cfg.custom ? *cfg.custom : find_algorithm(cfg.algorithm);
@@ -183,6 +208,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
       {"node_memory_bytes", pm.memory.empty() ? 0.0 : pm.memory[0]},
       {"os_resident_bytes", pm.os_resident}};
   if (pm.net.both_ways_Bps > 0) j["model"]["both_ways_Bps"] = pm.net.both_ways_Bps;
+  add_cpu_and_what_ifs(j, pm, cfg.overrides);
 
   add_image_section(j, images, scene, cfg, res.ok, res.images);
   j["host"] = {{"wall_time_s",

@@ -198,6 +198,27 @@ TEST(PaperFigures, CharlesSpeedupNeedsTheSequentialTime) {
   EXPECT_FALSE(needs_sequential_time(r));
 }
 
+// A what-if run still gets the paper's figure to compare with, marked as not the paper's machine.
+TEST(PaperFigures, AWhatIfRunsFiguresAreMarked) {
+  nlohmann::json r = {
+      {"status", "ok"},
+      {"machine", "ipsc860"},
+      {"topology", "cube"},
+      {"nodes", 16},
+      {"algorithm", "elastic"},
+      {"virtual_time_s", 1.0},
+      {"phases", nlohmann::json::array()},
+      {"what_if", nlohmann::json::object()},
+      {"scene", {{"path", kRoot + "/scenes/teapot.json"}, {"width", 512}, {"height", 512}}}};
+  auto f = paper_figures_for(r, 8.3);
+  ASSERT_EQ(f.size(), 1u) << r.dump();
+  EXPECT_FALSE(f[0].contains("what_if"));
+  r["what_if"]["cpu_scale"] = 2.0;
+  f = paper_figures_for(r, 8.3);
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f[0]["what_if"], true);
+}
+
 TEST(Sweep, ExpandsTheCartesianProductFirstAxisSlowest) {
   const auto pts = expand_sweep({{"nodes", {"1", "2", "3"}}, {"latency", {"10us", "1ms"}}},
                                 kRoot + "/scenes/teapot.json");

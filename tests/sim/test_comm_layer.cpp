@@ -102,6 +102,32 @@ TEST(Overrides, WhatIfFlagsChangeTheFormula) {
   expect_rel(vtime(run_simulation_isolated(s)), 0.25 * t1, 1e-12, "cpu-scale");
 }
 
+// A report says which model made its times: the what-ifs in force, every CPU cost (scaled), the
+// host link, and every option of the algorithm with its default.
+TEST(Overrides, TheReportStatesTheWhatIfsCpuCostsAndOptions) {
+  SimConfig s = sim_config("ipsc860", 2, Topology::Cube, Fidelity::Circuit);
+  s.algorithm = "elastic";
+  s.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/teapot.json";
+  s.width = s.height = 32;
+  const auto plain = run_simulation_isolated(s);
+  ASSERT_EQ(plain.value("status", ""), "ok") << plain.dump();
+  EXPECT_TRUE(plain["what_if"].is_object() && plain["what_if"].empty());
+  EXPECT_EQ(plain["options"]["vertices"], "broadcast");
+  EXPECT_EQ(plain["options"]["timed"], "picture");
+  EXPECT_DOUBLE_EQ(plain["model"]["host_startup_s"].get<double>(), 1e-3);
+  const double vt = plain["model"]["cpu_seconds"]["vertices_transformed"].get<double>();
+  EXPECT_GT(vt, 0);
+  s.overrides.cpu_scale = 0.5;
+  s.overrides.latency_s = 20e-6;
+  const auto w = run_simulation_isolated(s);
+  ASSERT_EQ(w.value("status", ""), "ok") << w.dump();
+  EXPECT_DOUBLE_EQ(w["what_if"]["cpu_scale"].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(w["what_if"]["latency_s"].get<double>(), 20e-6);
+  EXPECT_FALSE(w["what_if"].contains("bandwidth_Bps"));
+  expect_rel(w["model"]["cpu_seconds"]["vertices_transformed"].get<double>(), 0.5 * vt, 1e-12,
+             "cpu-scale in the report");
+}
+
 namespace {
 
 // The platform text of a built-in machine with `from` replaced by `to`, written to a file.
