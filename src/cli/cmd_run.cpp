@@ -117,8 +117,15 @@ static int cmd_run(std::vector<std::string> args) {
   std::vector<std::string> option_values(specs.size());
   for (std::size_t i = 0; i < specs.size(); ++i) {
     const auto& [s, algos] = specs[i];
+    std::string values; // the values the flag takes, which the help text may only describe
+    if (s.kind == OptionSpec::Kind::Choice)
+      for (const auto& c : s.choices)
+        values += (values.empty() ? " (" : "|") + c;
+    else if (s.kind == OptionSpec::Kind::Integer)
+      values = " (" + std::to_string(s.min) + ".." + std::to_string(s.max);
+    if (!values.empty()) values += ")";
     app.add_option("--" + s.name, option_values[i],
-                   algos + ": " + s.help +
+                   algos + ": " + s.help + values +
                        (s.default_value.empty() ? "" : " [" + s.default_value + "]"));
   }
   std::string backend = "sim";

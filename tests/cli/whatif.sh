@@ -203,4 +203,10 @@ usage_error compare-different-algorithms "different algorithms" \
   "$zcube" compare --measured "$tmp/pr.json" --predicted "$tmp/el.json"
 expect compare-refuses-before-printing $([ ! -s "$tmp/out" ]; echo $?) "$(cat "$tmp/out")"
 
+# --- an algorithm option's help names the values it takes ---------------------------------------
+"$zcube" run --help >"$tmp/help" 2>&1
+grep -q -- "--vertices .*(broadcast|request) \[broadcast\]" "$tmp/help" &&
+  grep -q -- "--packet .*(10..1000) \[100\]" "$tmp/help"
+expect run-help-names-option-values $? "$(grep -- '--vertices\|--packet' "$tmp/help")"
+
 exit $fail
