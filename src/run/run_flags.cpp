@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "machine/machine.hpp"
 #include "machine/units.hpp"
 #include "util/error.hpp"
 #include "util/image_size.hpp"
@@ -99,6 +100,13 @@ SimConfig config_from_flags(const std::map<std::string, std::string>& v, const s
     c.overrides.per_hop_s = parse_time(v.at("per-hop"), "--per-hop", Unit::Required);
     if (*c.overrides.per_hop_s > kMaxWhatIfDelay_s)
       throw UsageError("--per-hop '" + v.at("per-hop") + "': above 1 h" + clock_why);
+    const auto& names = machine_names();
+    if (!xml && std::find(names.begin(), names.end(), c.machine) != names.end() &&
+        machine_spec(c.machine).net.switching == Switching::StoreAndForward)
+      throw UsageError(
+          "--per-hop: " + c.machine + " is store-and-forward: each hop pays a whole " +
+          "start-up and transfer, there is no per-hop cost to change (use --latency, " +
+          "the start-up of each hop, or --bandwidth)");
   }
   if (v.count("cpu-scale")) {
     c.overrides.cpu_scale = parse_positive(v.at("cpu-scale"), "cpu-scale");

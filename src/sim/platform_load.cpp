@@ -343,6 +343,10 @@ void apply_overrides(const Overrides& o, PlatformModel& m, sg::Engine& e) {
     if (!(*o.bandwidth_Bps > 0)) throw UsageError("--bandwidth must be positive");
     n.per_byte_s = 1.0 / *o.bandwidth_Bps;
   }
+  if (o.per_hop_s && n.switching == Switching::StoreAndForward)
+    throw UsageError("--per-hop: " + m.machine + " is store-and-forward: each hop pays a whole " +
+                     "start-up and transfer, there is no per-hop cost to change (use --latency, " +
+                     "the start-up of each hop, or --bandwidth)");
   if (o.per_hop_s) n.per_hop_s = *o.per_hop_s;
   if (o.memory_bytes)
     for (auto& mem : m.memory)

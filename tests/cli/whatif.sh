@@ -209,4 +209,12 @@ grep -q -- "--vertices .*(broadcast|request) \[broadcast\]" "$tmp/help" &&
   grep -q -- "--packet .*(10..1000) \[100\]" "$tmp/help"
 expect run-help-names-option-values $? "$(grep -- '--vertices\|--packet' "$tmp/help")"
 
+# --- a what-if that would change nothing is refused: no per-hop cost on store-and-forward links ---
+usage_error per-hop-store-and-forward "volvox is store-and-forward" \
+  "$zcube" run --machine volvox --nodes 2 --size 8x8 --per-hop 10us
+usage_error per-hop-store-and-forward-file "store-and-forward" \
+  "$zcube" pingpong --machine platforms/volvox-ring-8.xml --sizes 1KiB --per-hop 10us
+usage_error per-hop-store-and-forward-platform "store-and-forward" \
+  "$zcube" platform --machine volvox --nodes 2 --per-hop 10us
+
 exit $fail
