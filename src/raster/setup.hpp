@@ -2,7 +2,9 @@
 // Triangle set-up: clip in homogeneous space, snap to a fixed-point grid (8 sub-pixel bits), and
 // derive the exact integer edge functions (with the top-left fill rule) and the attribute planes.
 // A screen triangle is a pure function of its three projected vertices, so every node that sets up
-// the same triangle gets the same bits, whatever else it renders.
+// the same triangle gets the same bits, whatever else it renders. Scenes are held on loading to
+// the coordinate range that keeps every clip-space value a finite float (scene/scene_range.hpp,
+// scenes/README.md 'Numeric range'); a vertex beyond it that still arrives is dropped here.
 #include <cstdint>
 #include <vector>
 
