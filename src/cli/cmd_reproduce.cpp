@@ -33,7 +33,7 @@ static int cmd_reproduce(std::vector<std::string> args) {
           ->check(CLI::Range(1, 4096))
           ->capture_default_str();
   app.add_flag("--full", o.full,
-               "Blazek's whole grid: 1..2048 spheres (about 12 minutes on two cores)");
+               "Blazek's whole grid: 1..2048 spheres (about 8 minutes on two cores)");
   app.add_flag("--overwrite", o.overwrite,
                "replace a paper's tables even when they hold more than this run writes (without "
                "it, such tables stay and this run's go beside them, e.g. results/blazek-quick/)");

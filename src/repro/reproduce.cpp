@@ -42,7 +42,7 @@ std::string top_readme(const ReproduceOptions& o, double wall_s, std::size_t poi
          (o.full ? std::string("1..2048 spheres, `--full`")
           : kept.empty()
               ? std::string("1..64 spheres; `zcube reproduce blazek --full` for 1..2048, about "
-                            "12 minutes")
+                            "8 minutes")
               : std::string("the `--full` tables, kept; this run's 1..64 spheres are in "
                             "[blazek-quick/](blazek-quick/README.md)")) +
          ") |\n"

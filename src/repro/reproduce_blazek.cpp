@@ -108,7 +108,7 @@ std::string write_blazek(const std::vector<int>& spheres, const Reports& reps,
       "# Blazek 1991: four decompositions on the simulated iPSC/2\n\n"
       "Written by `zcube reproduce blazek" +
           std::string(full ? " --full" : "") +
-          "` (src/repro/reproduce_blazek.cpp; `--full` for 1..2048 spheres, about 12 minutes on "
+          "` (src/repro/reproduce_blazek.cpp; `--full` for 1..2048 spheres, about 8 minutes on "
           "two cores). Thesis: E. M. Blazek, *Parallel Image Generation Using the Z-Buffering "
           "Algorithm on a Medium Grained Distributed Memory Model Computer*, Oklahoma State "
           "University, 1991, ch. V "
