@@ -6,7 +6,7 @@ results/scaling/sim_scaling.csv, goals.csv and sim_scaling.png (log-log, with an
 reference line of slope 1).
 
     bench/sim_scaling.py [--zcube build/zcube] [--before OLD_ZCUBE] [--max-nodes 1024]
-                         [--out results/scaling] [--plot-only]
+                         [--repeat 9] [--out results/scaling] [--plot-only] [--goals-only | --rows-only]
 
 --before measures the goals of another binary too, each run alternating with this one's (the same
 load), and writes both columns. Wall times are host wall-clock: on a shared machine compare runs made side
@@ -160,6 +160,8 @@ def main():
                     help="runs of each goal's short commands (a third as many at 1024 nodes)")
     ap.add_argument("--out", default="results/scaling")
     ap.add_argument("--plot-only", action="store_true", help="redraw from the CSV in --out")
+    ap.add_argument("--goals-only", action="store_true", help="measure the goals only")
+    ap.add_argument("--rows-only", action="store_true", help="measure the P = 1..1024 rows only")
     a = ap.parse_args()
     os.makedirs(a.out, exist_ok=True)
     if a.plot_only:
@@ -169,18 +171,19 @@ def main():
         plot(rows, a.out)
         return
     rows = []
-    for algo, scene, size, extra in CASES:
+    for algo, scene, size, extra in [] if a.goals_only else CASES:
         p = 1
         while p <= a.max_nodes:
             rows.append(run(a.zcube, algo, scene, size, extra, p))
             print(rows[-1], flush=True)
             p *= 2
-    with open(os.path.join(a.out, "sim_scaling.csv"), "w", newline="") as f:
-        w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-        w.writeheader()
-        w.writerows(rows)
-    plot(rows, a.out)
-    if a.max_nodes >= 1024:
+    if rows:
+        with open(os.path.join(a.out, "sim_scaling.csv"), "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
+            w.writeheader()
+            w.writerows(rows)
+        plot(rows, a.out)
+    if a.max_nodes >= 1024 and not a.rows_only:
         g = goals([a.before, a.zcube] if a.before else [a.zcube], a.repeat)
         before, after = g.get(a.before), g[a.zcube]
         write_goals(a.out, after, before)
