@@ -157,6 +157,26 @@ double checked(double v, const std::string& where, const std::string& what, doub
   return v;
 }
 
+// Beyond these figures the simulated clock (a double) passes 2^52 ns, where it no longer resolves
+// a nanosecond and compute times are rounded: the bounds of the what-if flags (run/run_flags.cpp).
+double clock_safe_delay(double v, const std::string& where, const std::string& what) {
+  if (v > 3600)
+    throw InputError(where, 0,
+                     what + " = " + format_double(v) +
+                         " s: above 1 h; slower costs push the simulated clock past 2^52 ns, "
+                         "where compute times are rounded");
+  return v;
+}
+
+double clock_safe_bandwidth(double v, const std::string& where, const std::string& what) {
+  if (v < 1)
+    throw InputError(where, 0,
+                     what + " = " + format_double(v) +
+                         " Bps: below 1 Bps; slower links push the simulated clock past 2^52 ns, "
+                         "where compute times are rounded");
+  return v;
+}
+
 double number(const std::string& text, const std::string& where, const std::string& what) {
   char* end = nullptr;
   const double d = std::strtod(text.c_str(), &end);
@@ -189,7 +209,7 @@ void read_startup(const std::string& text, const std::string& where, NetworkPara
                          "': zcube reads one section from size 0 and at most one more (the long "
                          "protocol)");
   for (const auto& s : sections) {
-    checked(s[1], where, what + " offset");
+    clock_safe_delay(checked(s[1], where, what + " offset"), where, what + " offset");
     if (s[2] != 0) throw InputError(where, 0, what + " factor: zcube reads 0 only");
   }
   short_overhead = sections[0][1];
@@ -250,8 +270,10 @@ void read_links(const sg::Engine& e, const std::string& where, NetworkParams& n)
     }
     const bool host = name == kHostUpLink || name == kHostDownLink;
     const std::string what = "link '" + name + "' ";
-    const double bw = checked(l->get_bandwidth(), where, what + "bandwidth", 0, true);
-    const double lat = checked(l->get_latency(), where, what + "latency");
+    const double bw = clock_safe_bandwidth(
+        checked(l->get_bandwidth(), where, what + "bandwidth", 0, true), where, what + "bandwidth");
+    const double lat = clock_safe_delay(checked(l->get_latency(), where, what + "latency"), where,
+                                        what + "latency");
     double& per_byte = host ? n.host_per_byte_s : n.per_byte_s;
     double& latency = host ? n.host_startup_s : n.per_hop_s;
     const bool first = host ? per_byte == 0 : !channel_seen;
