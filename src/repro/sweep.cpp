@@ -163,7 +163,10 @@ void add_baselines(const std::vector<SweepAxis>& axes, std::vector<SweepPoint>& 
     if (std::find(have.begin(), have.end(), k) != have.end()) continue;
     auto flags = k;
     flags["algorithm"] = "sequential";
-    flags["nodes"] = "1";
+    // A platform file states its node count; sequential renders on node 0 alone, so on the file's
+    // P nodes it takes its one-node time.
+    const auto m = k.find("machine");
+    if (m == k.end() || !m->second.ends_with(".xml")) flags["nodes"] = "1";
     SweepPoint p = make_point(flags, scene);
     for (const auto& ax : axes)
       if (!p.values.count(ax.flag)) p.values[ax.flag] = "";
@@ -186,7 +189,7 @@ bool add_speedups(const std::vector<SweepPoint>& points, const std::vector<nlohm
       if (is_baseline(points[b]) && baseline_key(points[b]) == baseline_key(points[i]) &&
           rows[b]["timed_s"].is_number()) {
         const double sp = rows[b]["timed_s"].get<double>() / row["timed_s"].get<double>();
-        const int nodes = reports[i].value("nodes", 1);
+        const int nodes = is_baseline(points[i]) ? 1 : reports[i].value("nodes", 1);
         row["speedup"] = sp;
         row["efficiency"] = sp / std::max(1, nodes);
         break;

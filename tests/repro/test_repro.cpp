@@ -219,6 +219,27 @@ TEST(PaperFigures, AWhatIfRunsFiguresAreMarked) {
   EXPECT_EQ(f[0]["what_if"], true);
 }
 
+// A platform file states its own node count: its baseline runs on it without --nodes 1 (which the
+// file would refuse), sequential rendering on node 0 alone.
+TEST(Sweep, ABaselineOnAPlatformFileTakesTheFilesNodes) {
+  const std::string xml = kRoot + "/platforms/volvox-ring-8.xml";
+  const std::vector<SweepAxis> axes = {{"machine", {xml}}, {"algorithm", {"elastic"}}};
+  auto pts = expand_sweep(axes, kRoot + "/scenes/teapot.json");
+  add_baselines(axes, pts, kRoot + "/scenes/teapot.json");
+  ASSERT_EQ(pts.size(), 2u);
+  ASSERT_TRUE(is_baseline(pts[1]));
+  ASSERT_TRUE(pts[1].config.has_value()) << pts[1].error;
+  EXPECT_EQ(pts[1].config->nodes, 0); // the file's
+  EXPECT_EQ(pts[1].config->algorithm, "sequential");
+  const std::vector<nlohmann::json> reps = {
+      {{"status", "ok"}, {"nodes", 8}, {"virtual_time_s", 2.0}},
+      {{"status", "ok"}, {"nodes", 8}, {"virtual_time_s", 8.0}}};
+  auto rows = sweep_rows(axes, pts, reps);
+  ASSERT_TRUE(add_speedups(pts, reps, rows));
+  EXPECT_DOUBLE_EQ(rows[0]["efficiency"].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(rows[1]["efficiency"].get<double>(), 1.0); // one node works
+}
+
 TEST(Sweep, ExpandsTheCartesianProductFirstAxisSlowest) {
   const auto pts = expand_sweep({{"nodes", {"1", "2", "3"}}, {"latency", {"10us", "1ms"}}},
                                 kRoot + "/scenes/teapot.json");
