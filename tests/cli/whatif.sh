@@ -178,6 +178,10 @@ usage_error calibrate-keeps-fit "--overwrite" "$zcube" calibrate --out "$tmp/cal
 # reference, the machine figures are in docs/machines.md).
 links=$(grep -rln '\.\./shared' README.md docs src scenes platforms results/*/README.md 2>/dev/null)
 expect docs-no-outside-links $([ -z "$links" ]; echo $?) "$links"
+# Nor may they send the reader to the specification's documents, which are not in the clone.
+spec=$(grep -rln 'DESIGN\.md\|MACHINES\.md\|DESIGN §' README.md docs scenes platforms \
+  results/README.md results/*/README.md 2>/dev/null)
+expect docs-no-specification-references $([ -z "$spec" ]; echo $?) "$spec"
 for f in docs/index.md docs/user-guide.md docs/adding-a-machine.md docs/adding-an-algorithm.md; do
   test -s "$f"
   expect "docs-has-$(basename "$f")" $?
