@@ -68,8 +68,9 @@ static int finish(const SimResult& r, const std::string& report, const std::stri
   if (!depth.empty() && !r.images.empty()) write_depth_exr(r.images.back(), depth);
   const auto& j = r.report;
   std::cout << std::setprecision(6) << j["algorithm"].get<std::string>() << " on "
-            << j["machine"].get<std::string>() << " (" << j["nodes"] << " nodes, "
-            << j["topology"].get<std::string>() << ", " << j["fidelity"].get<std::string>()
+            << j["machine"].get<std::string>() << " (" << j["nodes"]
+            << (j["nodes"] == 1 ? " node, " : " nodes, ") << j["topology"].get<std::string>()
+            << ", " << j["fidelity"].get<std::string>()
             << "): " << (j.value("measured", false) ? "measured" : "virtual") << " time "
             << j["virtual_time_s"].get<double>() << " s\n";
   if (j.contains("timed_s")) // what the speed-ups divide (docs/papers.md)
