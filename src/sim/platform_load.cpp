@@ -331,12 +331,13 @@ PlatformModel read_platform(const sg::Engine& e, const std::string& where) {
   m.net.startup_short_s = short_o + fixed;
   m.net.startup_long_s = long_o + fixed;
 
-  const double memory =
-      parse_bytes(zone_prop(z, "zcube.node_memory", where), where + ": zcube.node_memory");
+  // A size without a unit is refused, as on the command line (a bare "4" would be 4 bytes).
+  const double memory = parse_bytes(zone_prop(z, "zcube.node_memory", where),
+                                    where + ": zcube.node_memory", Unit::Required);
   checked(memory, where, "zcube.node_memory", 0, true);
   // The node operating system's resident size (docs/memory.md); files without it: none.
   if (const char* os = z->get_property("zcube.os_resident")) {
-    m.os_resident = parse_bytes(os, where + ": zcube.os_resident");
+    m.os_resident = parse_bytes(os, where + ": zcube.os_resident", Unit::Required);
     checked(m.os_resident, where, "zcube.os_resident", 0, false);
   }
   CostTable cycles;
