@@ -31,6 +31,7 @@ UNITS = {"s": 1, "ms": 1e-3, "us": 1e-6, "ns": 1e-9, "ps": 1e-12, "m": 60, "h": 
          "KiB": 1024.0, "MiB": 1048576.0, "GiB": 1073741824.0}
 FLAG_LABELS = {"nodes": "nodes P", "latency": "message start-up (s)",
                "bandwidth": "channel bandwidth (B/s)", "per-hop": "per-hop cost (s)",
+               "host-latency": "host link start-up (s)", "host-bandwidth": "host link bandwidth (B/s)",
                "cpu-scale": "CPU cost multiplier", "memory": "node memory (B)",
                "cost-scale": "cost multiplier", "frames": "frames", "packet": "polygons per packet"}
 COLUMN_LABELS = {"virtual_s": "virtual time of the run (s)",

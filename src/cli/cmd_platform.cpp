@@ -18,6 +18,8 @@ MachineSpec edited(MachineSpec spec, const Overrides& o, const std::string& comm
   if (o.latency_s) spec.net.startup_short_s = spec.net.startup_long_s = *o.latency_s;
   if (o.bandwidth_Bps) spec.net.per_byte_s = 1.0 / *o.bandwidth_Bps;
   if (o.per_hop_s) spec.net.per_hop_s = *o.per_hop_s;
+  if (o.host_latency_s) spec.net.host_startup_s = *o.host_latency_s;
+  if (o.host_bandwidth_Bps) spec.net.host_per_byte_s = 1.0 / *o.host_bandwidth_Bps;
   if (o.memory_bytes) spec.memory_bytes = *o.memory_bytes;
   const double lowest = spec.net.per_hop_s + kSmpiEnvelopeBytes * spec.net.per_byte_s;
   if (std::min(spec.net.startup_short_s, spec.net.startup_long_s) < lowest)
@@ -44,6 +46,8 @@ static int cmd_platform(std::vector<std::string> args) {
       {"latency", "message start-up, both protocols (e.g. 275us)"},
       {"bandwidth", "channel bandwidth (e.g. 2.8MBps)"},
       {"per-hop", "per-hop cost: the channel latency (e.g. 10us)"},
+      {"host-latency", "host (srm) link start-up: host-up and host-down latency (e.g. 1ms)"},
+      {"host-bandwidth", "host (srm) link bandwidth: host-up and host-down (e.g. 1MBps)"},
       {"cpu-scale", "multiply every CPU cost: the host speed becomes clock / k"},
       {"memory", "node memory (e.g. 16MiB)"}};
   std::map<std::string, std::string> given;

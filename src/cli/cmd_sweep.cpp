@@ -28,9 +28,10 @@ namespace zc::cli {
 static void check_quantities(const std::vector<SweepAxis>& axes) {
   for (const auto& ax : axes)
     for (const auto& v : ax.values) {
-      if (ax.flag == "latency" || ax.flag == "per-hop")
+      if (ax.flag == "latency" || ax.flag == "per-hop" || ax.flag == "host-latency")
         parse_time(v, "--" + ax.flag, Unit::Required);
-      if (ax.flag == "bandwidth") parse_bandwidth(v, "--bandwidth", Unit::Required);
+      if (ax.flag == "bandwidth" || ax.flag == "host-bandwidth")
+        parse_bandwidth(v, "--" + ax.flag, Unit::Required);
       if (ax.flag == "memory") parse_bytes(v, "--memory", Unit::Required);
     }
 }

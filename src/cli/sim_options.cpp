@@ -23,6 +23,10 @@ void SimFlags::add_to(CLI::App& app) {
   app.add_option("--latency", latency, "what-if: message start-up (e.g. 275us)");
   app.add_option("--bandwidth", bandwidth, "what-if: channel bandwidth (e.g. 2.8MBps)");
   app.add_option("--per-hop", per_hop, "what-if: per-hop cost (e.g. 10us)");
+  app.add_option("--host-latency", host_latency,
+                 "what-if: host (srm) link start-up to node 0 (e.g. 1ms)");
+  app.add_option("--host-bandwidth", host_bandwidth,
+                 "what-if: host (srm) link bandwidth (e.g. 1MBps)");
   app.add_option("--cpu-scale", cpu_scale, "what-if: multiply every CPU cost (0.25 = 4x faster)");
   app.add_option("--memory", memory, "what-if: node memory (e.g. 16MiB)");
   app.add_option("--cost-scale", cost_scale, "multiply every cost, CPU and network");
@@ -56,9 +60,14 @@ std::map<std::string, std::string> SimFlags::flags() const {
   const bool xml = machine.ends_with(".xml");
   if (!xml || (nodes_option && nodes_option->count() > 0)) m["nodes"] = std::to_string(nodes);
   if (!xml || (topology_option && topology_option->count() > 0)) m["topology"] = topology;
-  const std::pair<const char*, const std::string*> text[] = {
-      {"latency", &latency},     {"bandwidth", &bandwidth}, {"per-hop", &per_hop},
-      {"cpu-scale", &cpu_scale}, {"memory", &memory},       {"cost-scale", &cost_scale}};
+  const std::pair<const char*, const std::string*> text[] = {{"latency", &latency},
+                                                             {"bandwidth", &bandwidth},
+                                                             {"per-hop", &per_hop},
+                                                             {"host-latency", &host_latency},
+                                                             {"host-bandwidth", &host_bandwidth},
+                                                             {"cpu-scale", &cpu_scale},
+                                                             {"memory", &memory},
+                                                             {"cost-scale", &cost_scale}};
   for (const auto& [k, v] : text)
     if (!v->empty()) m[k] = *v;
   return m;
@@ -83,6 +92,11 @@ std::string describe_overrides(const SimConfig& c) {
   if (o.bandwidth_Bps)
     s << "what-if: --bandwidth " << *o.bandwidth_Bps / 1e6 << " MB/s (channel bandwidth)\n";
   if (o.per_hop_s) s << "what-if: --per-hop " << *o.per_hop_s * 1e6 << " us\n";
+  if (o.host_latency_s)
+    s << "what-if: --host-latency " << *o.host_latency_s * 1e6 << " us (host link start-up)\n";
+  if (o.host_bandwidth_Bps)
+    s << "what-if: --host-bandwidth " << *o.host_bandwidth_Bps / 1e6
+      << " MB/s (host link bandwidth)\n";
   if (o.cpu_scale) s << "what-if: --cpu-scale " << *o.cpu_scale << " (every CPU cost)\n";
   if (o.memory_bytes)
     s << "what-if: --memory " << *o.memory_bytes / 1048576 << " MiB (node memory)\n";

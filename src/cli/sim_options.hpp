@@ -14,7 +14,8 @@ namespace zc::cli {
 struct SimFlags {
   std::string machine = "ipsc2", topology = "cube", fidelity = "circuit";
   int nodes = 1;
-  std::string latency, bandwidth, per_hop, cpu_scale, memory, cost_scale;
+  std::string latency, bandwidth, per_hop, host_latency, host_bandwidth, cpu_scale, memory,
+      cost_scale;
   std::vector<std::string> cfg, log;   // passed to SimGrid as --cfg=... and --log=...
   CLI::Option* nodes_option = nullptr; // a platform .xml gives the node count unless --nodes does
   CLI::Option* topology_option = nullptr; // and its topology (--topology with it is refused)

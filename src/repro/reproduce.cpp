@@ -82,9 +82,14 @@ std::string config_key(const SimConfig& c) {
                       {"simgrid", c.simgrid_args}};
   const Overrides& v = c.overrides;
   const std::pair<const char*, const std::optional<double>*> over[] = {
-      {"latency_s", &v.latency_s},       {"bandwidth_Bps", &v.bandwidth_Bps},
-      {"per_hop_s", &v.per_hop_s},       {"cpu_scale", &v.cpu_scale},
-      {"memory_bytes", &v.memory_bytes}, {"cost_scale", &v.cost_scale}};
+      {"latency_s", &v.latency_s},
+      {"bandwidth_Bps", &v.bandwidth_Bps},
+      {"per_hop_s", &v.per_hop_s},
+      {"host_latency_s", &v.host_latency_s},
+      {"host_bandwidth_Bps", &v.host_bandwidth_Bps},
+      {"cpu_scale", &v.cpu_scale},
+      {"memory_bytes", &v.memory_bytes},
+      {"cost_scale", &v.cost_scale}};
   for (const auto& [k, x] : over)
     if (*x) j[k] = **x;
   return j.dump();

@@ -20,9 +20,11 @@ struct Overrides {
   std::optional<double> latency_s;     // start-up, short and long messages
   std::optional<double> bandwidth_Bps; // channel bandwidth (per-byte cost = 1/bandwidth)
   std::optional<double> per_hop_s;
-  std::optional<double> cpu_scale;    // multiplies every CPU cost
-  std::optional<double> memory_bytes; // node memory
-  std::optional<double> cost_scale;   // multiplies every cost, CPU and network (stiffness checks)
+  std::optional<double> host_latency_s;     // host (srm) link start-up
+  std::optional<double> host_bandwidth_Bps; // host link rate (its per-byte cost = 1/rate)
+  std::optional<double> cpu_scale;          // multiplies every CPU cost
+  std::optional<double> memory_bytes;       // node memory
+  std::optional<double> cost_scale; // multiplies every cost, CPU and network (stiffness checks)
 };
 
 struct SimConfig {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "machine/machine.hpp"
 #include "machine/units.hpp"
@@ -18,9 +19,10 @@ std::vector<std::pair<OptionSpec, std::string>> run_option_specs() {
 
 const std::vector<std::string>& run_flag_names() {
   static const std::vector<std::string> f = [] {
-    std::vector<std::string> v = {"machine", "nodes",     "topology", "fidelity",  "algorithm",
-                                  "scene",   "size",      "frames",   "latency",   "bandwidth",
-                                  "per-hop", "cpu-scale", "memory",   "cost-scale"};
+    std::vector<std::string> v = {"machine",        "nodes",     "topology", "fidelity",
+                                  "algorithm",      "scene",     "size",     "frames",
+                                  "latency",        "bandwidth", "per-hop",  "host-latency",
+                                  "host-bandwidth", "cpu-scale", "memory",   "cost-scale"};
     for (const auto& [s, algos] : run_option_specs())
       v.push_back(s.name);
     return v;
@@ -30,8 +32,8 @@ const std::vector<std::string>& run_flag_names() {
 
 namespace {
 
-constexpr double kMaxWhatIfDelay_s = 3600;      // --latency, --per-hop
-constexpr double kMinWhatIfBandwidth_Bps = 1.0; // --bandwidth
+constexpr double kMaxWhatIfDelay_s = 3600;      // --latency, --per-hop, --host-latency
+constexpr double kMinWhatIfBandwidth_Bps = 1.0; // --bandwidth, --host-bandwidth
 
 int parse_int(const std::string& s, const std::string& flag) {
   std::size_t used = 0;
@@ -52,6 +54,75 @@ double parse_positive(const std::string& s, const std::string& flag) {
   if (end == s.c_str() || *end || !(v > 0) || !std::isfinite(v))
     throw UsageError("--" + flag + " '" + s + "': expected a positive number");
   return v;
+}
+
+// What-ifs beyond these magnitudes push the virtual clock past 2^52 ns, where a double no longer
+// resolves the simulated CPU's nanoseconds (a 1e300 s latency made every compute phase 0 s; the
+// run also fails then, sim/simulation.cpp). Physical machines sit far inside them.
+const char* const kClockWhy = ": slower costs push the simulated clock (a double) past 2^52 ns, "
+                              "where compute times are rounded";
+
+// A delay what-if (--latency, --per-hop, --host-latency): a time with its unit, at most 1 h.
+std::optional<double> delay_flag(const std::map<std::string, std::string>& v,
+                                 const std::string& flag) {
+  if (!v.count(flag)) return std::nullopt;
+  const double s = parse_time(v.at(flag), "--" + flag, Unit::Required);
+  if (s > kMaxWhatIfDelay_s)
+    throw UsageError("--" + flag + " '" + v.at(flag) + "': above 1 h" + kClockWhy);
+  return s;
+}
+
+// A rate what-if (--bandwidth, --host-bandwidth): a bandwidth with its unit, at least 1 Bps.
+std::optional<double> rate_flag(const std::map<std::string, std::string>& v,
+                                const std::string& flag) {
+  if (!v.count(flag)) return std::nullopt;
+  const double bps = parse_bandwidth(v.at(flag), "--" + flag, Unit::Required);
+  if (bps < kMinWhatIfBandwidth_Bps)
+    throw UsageError("--" + flag + " '" + v.at(flag) + "': below 1 Bps" + kClockWhy);
+  return bps;
+}
+
+// The what-if flags, each checked against the range the simulated clock can time.
+Overrides what_ifs(const std::map<std::string, std::string>& v, const std::string& machine,
+                   bool xml) {
+  Overrides o;
+  o.latency_s = delay_flag(v, "latency");
+  o.bandwidth_Bps = rate_flag(v, "bandwidth");
+  o.per_hop_s = delay_flag(v, "per-hop");
+  if (o.per_hop_s) {
+    const auto& names = machine_names();
+    if (!xml && std::find(names.begin(), names.end(), machine) != names.end() &&
+        machine_spec(machine).net.switching == Switching::StoreAndForward)
+      throw UsageError("--per-hop: " + machine + " is store-and-forward: each hop pays a whole " +
+                       "start-up and transfer, there is no per-hop cost to change (use " +
+                       "--latency, the start-up of each hop, or --bandwidth)");
+  }
+  // The host (srm) link to node 0 (docs/machines.md), held to the node channels' limits.
+  o.host_latency_s = delay_flag(v, "host-latency");
+  o.host_bandwidth_Bps = rate_flag(v, "host-bandwidth");
+  if (v.count("cpu-scale")) {
+    o.cpu_scale = parse_positive(v.at("cpu-scale"), "cpu-scale");
+    // 1e-3 keeps a scaled cycle (25 ns and up) above the simulator's 1e-12 s timing precision.
+    if (*o.cpu_scale < 1e-3 || *o.cpu_scale > 1e3)
+      throw UsageError("--cpu-scale '" + v.at("cpu-scale") +
+                       "': outside 1e-3..1e3 (faster cycles fall below the simulator's timing "
+                       "precision; slower ones push the clock past 2^52 ns)");
+  }
+  if (v.count("memory")) {
+    o.memory_bytes = parse_bytes(v.at("memory"), "--memory", Unit::Required);
+    if (!(*o.memory_bytes > 0))
+      throw UsageError("--memory '" + v.at("memory") + "': a node needs some memory (> 0 bytes)");
+  }
+  if (v.count("cost-scale")) {
+    o.cost_scale = parse_positive(v.at("cost-scale"), "cost-scale");
+    // Every cost and the simulator's timing precision (1e-12 s) are multiplied by k; outside
+    // this range the scaled precision leaves normal doubles (1e-320 spun SimGrid forever).
+    if (*o.cost_scale < 1e-6 || *o.cost_scale > 1e6)
+      throw UsageError("--cost-scale '" + v.at("cost-scale") +
+                       "': outside 1e-6..1e6 (it also scales the simulator's 1e-12 s timing "
+                       "precision, which must stay a normal number above the clock's rounding)");
+  }
+  return o;
 }
 
 } // namespace
@@ -81,55 +152,7 @@ SimConfig config_from_flags(const std::map<std::string, std::string>& v, const s
     c.height = s.height;
   }
   c.options.frames = v.count("frames") ? parse_int(v.at("frames"), "frames") : 1;
-  // What-ifs beyond these magnitudes push the virtual clock past 2^52 ns, where a double no longer
-  // resolves the simulated CPU's nanoseconds (a 1e300 s latency made every compute phase 0 s; the
-  // run also fails then, sim/simulation.cpp). Physical machines sit far inside them.
-  const std::string clock_why = ": slower costs push the simulated clock (a double) past 2^52 ns, "
-                                "where compute times are rounded";
-  if (v.count("latency")) {
-    c.overrides.latency_s = parse_time(v.at("latency"), "--latency", Unit::Required);
-    if (*c.overrides.latency_s > kMaxWhatIfDelay_s)
-      throw UsageError("--latency '" + v.at("latency") + "': above 1 h" + clock_why);
-  }
-  if (v.count("bandwidth")) {
-    c.overrides.bandwidth_Bps = parse_bandwidth(v.at("bandwidth"), "--bandwidth", Unit::Required);
-    if (*c.overrides.bandwidth_Bps < kMinWhatIfBandwidth_Bps)
-      throw UsageError("--bandwidth '" + v.at("bandwidth") + "': below 1 Bps" + clock_why);
-  }
-  if (v.count("per-hop")) {
-    c.overrides.per_hop_s = parse_time(v.at("per-hop"), "--per-hop", Unit::Required);
-    if (*c.overrides.per_hop_s > kMaxWhatIfDelay_s)
-      throw UsageError("--per-hop '" + v.at("per-hop") + "': above 1 h" + clock_why);
-    const auto& names = machine_names();
-    if (!xml && std::find(names.begin(), names.end(), c.machine) != names.end() &&
-        machine_spec(c.machine).net.switching == Switching::StoreAndForward)
-      throw UsageError(
-          "--per-hop: " + c.machine + " is store-and-forward: each hop pays a whole " +
-          "start-up and transfer, there is no per-hop cost to change (use --latency, " +
-          "the start-up of each hop, or --bandwidth)");
-  }
-  if (v.count("cpu-scale")) {
-    c.overrides.cpu_scale = parse_positive(v.at("cpu-scale"), "cpu-scale");
-    // 1e-3 keeps a scaled cycle (25 ns and up) above the simulator's 1e-12 s timing precision.
-    if (*c.overrides.cpu_scale < 1e-3 || *c.overrides.cpu_scale > 1e3)
-      throw UsageError("--cpu-scale '" + v.at("cpu-scale") +
-                       "': outside 1e-3..1e3 (faster cycles fall below the simulator's timing "
-                       "precision; slower ones push the clock past 2^52 ns)");
-  }
-  if (v.count("memory")) {
-    c.overrides.memory_bytes = parse_bytes(v.at("memory"), "--memory", Unit::Required);
-    if (!(*c.overrides.memory_bytes > 0))
-      throw UsageError("--memory '" + v.at("memory") + "': a node needs some memory (> 0 bytes)");
-  }
-  if (v.count("cost-scale")) {
-    c.overrides.cost_scale = parse_positive(v.at("cost-scale"), "cost-scale");
-    // Every cost and the simulator's timing precision (1e-12 s) are multiplied by k; outside
-    // this range the scaled precision leaves normal doubles (1e-320 spun SimGrid forever).
-    if (*c.overrides.cost_scale < 1e-6 || *c.overrides.cost_scale > 1e6)
-      throw UsageError("--cost-scale '" + v.at("cost-scale") +
-                       "': outside 1e-6..1e6 (it also scales the simulator's 1e-12 s timing "
-                       "precision, which must stay a normal number above the clock's rounding)");
-  }
+  c.overrides = what_ifs(v, c.machine, xml);
   for (const auto& [s, algos] : run_option_specs())
     if (v.count(s.name)) c.options.values[s.name] = v.at(s.name);
   // The algorithm and its options are checked here, so a bad combination fails only its point.

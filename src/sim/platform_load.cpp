@@ -371,6 +371,11 @@ void apply_overrides(const Overrides& o, PlatformModel& m, sg::Engine& e) {
                      "start-up and transfer, there is no per-hop cost to change (use --latency, " +
                      "the start-up of each hop, or --bandwidth)");
   if (o.per_hop_s) n.per_hop_s = *o.per_hop_s;
+  if (o.host_latency_s) n.host_startup_s = *o.host_latency_s;
+  if (o.host_bandwidth_Bps) {
+    if (!(*o.host_bandwidth_Bps > 0)) throw UsageError("--host-bandwidth must be positive");
+    n.host_per_byte_s = 1.0 / *o.host_bandwidth_Bps;
+  }
   if (o.memory_bytes)
     for (auto& mem : m.memory)
       mem = *o.memory_bytes;

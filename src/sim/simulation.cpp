@@ -45,6 +45,8 @@ void add_cpu_and_what_ifs(nlohmann::json& j, const PlatformModel& pm, const Over
   if (o.latency_s) w["latency_s"] = *o.latency_s;
   if (o.bandwidth_Bps) w["bandwidth_Bps"] = *o.bandwidth_Bps;
   if (o.per_hop_s) w["per_hop_s"] = *o.per_hop_s;
+  if (o.host_latency_s) w["host_latency_s"] = *o.host_latency_s;
+  if (o.host_bandwidth_Bps) w["host_bandwidth_Bps"] = *o.host_bandwidth_Bps;
   if (o.cpu_scale) w["cpu_scale"] = *o.cpu_scale;
   if (o.memory_bytes) w["memory_bytes"] = *o.memory_bytes;
   if (o.cost_scale) w["cost_scale"] = *o.cost_scale;

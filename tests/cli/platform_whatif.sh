@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `zcube platform` what-ifs (issue 15) and platforms on the fly for any P (issue 14 item 2):
-# a platform written with --latency/--bandwidth/--cpu-scale runs as the same flags do on the
-# built-in machine, and 1024-node cubes and 1000-node rings are generated and routed.
+# a platform written with --latency/--bandwidth/--cpu-scale (or --host-latency/--host-bandwidth)
+# runs as the same flags do on the built-in machine, and 1024-node cubes and 1000-node rings are
+# generated and routed.
 set -u
 zcube=$1
 src=$2
@@ -23,6 +24,21 @@ echo "file:  $a"
 echo "flags: $b"
 case "$a" in *"virtual time"*) ;; *) bad "run on the written platform: $a" ;; esac
 [ "$a" = "$b" ] || bad "the written what-if platform and the flags differ"
+# The host (srm) link: both directions written, and Blazek's host-initiated method times alike.
+host=(--host-latency 275us --host-bandwidth 2.8MBps)
+"$zcube" platform --machine ipsc2 --nodes 4 "${host[@]}" -o "$tmp/h.xml" || bad "platform host -o"
+n=$(grep -c '<link id="host-\(up\|down\)" bandwidth="2.8MBps" latency="275us"/>' "$tmp/h.xml")
+[ "$n" = 2 ] || bad "--host-latency/--host-bandwidth: $n of host-up, host-down written"
+run=(run --algorithm host-initiated --scene "$src/scenes/blazek/spheres_16.json" --size 64x64)
+a=$("$zcube" "${run[@]}" --machine "$tmp/h.xml" 2>&1 | grep "virtual time")
+b=$("$zcube" "${run[@]}" --machine ipsc2 --nodes 4 "${host[@]}" 2>&1 | grep "virtual time")
+c=$("$zcube" "${run[@]}" --machine ipsc2 --nodes 4 2>&1 | grep "virtual time")
+echo "host file:  $a"
+echo "host flags: $b"
+echo "default:    $c"
+case "$a" in *"virtual time"*) ;; *) bad "run on the written host platform: $a" ;; esac
+[ "$a" = "$b" ] || bad "the written host-link platform and the flags differ"
+[ "$a" != "$c" ] || bad "the host-link what-if changed nothing"
 # One-way times on generated platforms: iPSC/860 cube of 1024 (10 hops: 75 + 9 x 10 us) and a
 # Volvox ring of 1000 (500 hops of 50 us, store-and-forward).
 t=$("$zcube" pingpong --machine ipsc860 --nodes 1024 --to 1023 --sizes 0B | awk '!/^#/ {print $(NF - 2), $NF}')

@@ -91,6 +91,12 @@ usage topology-with-platform "--topology ring" "$zcube" run --machine "$src/plat
 usage latency-1e300 "--latency '1e300s'" "$zcube" run --latency 1e300s --nodes 2 --size 16x16
 usage bandwidth-1e-9 "--bandwidth '1e-9Bps'" "$zcube" run --bandwidth 1e-9Bps --nodes 2 --size 16x16
 usage per-hop-1e300 "--per-hop" "$zcube" run --per-hop 1e300s --nodes 2 --size 16x16
+usage host-latency-1e300 "--host-latency '1e300s'" "$zcube" run --host-latency 1e300s \
+  --algorithm host-initiated --nodes 2 --size 16x16
+usage host-bandwidth-1e-9 "--host-bandwidth '1e-9Bps'" "$zcube" run --host-bandwidth 1e-9Bps \
+  --algorithm host-initiated --nodes 2 --size 16x16
+usage host-bandwidth-inf "--host-bandwidth" "$zcube" run --host-bandwidth 1e308GBps \
+  --algorithm host-initiated --nodes 2 --size 16x16
 usage bandwidth-inf "--bandwidth" "$zcube" run --bandwidth 1e308GBps --nodes 2 --size 16x16
 usage cpu-scale-tiny "--cpu-scale" "$zcube" run --cpu-scale 1e-9 --size 16x16
 usage cpu-scale-huge "--cpu-scale" "$zcube" run --cpu-scale 1e9 --size 16x16

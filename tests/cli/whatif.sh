@@ -221,4 +221,58 @@ usage_error per-hop-store-and-forward-file "store-and-forward" \
 usage_error per-hop-store-and-forward-platform "store-and-forward" \
   "$zcube" platform --machine volvox --nodes 2 --per-hop 10us
 
+# --- the host (srm) link's what-ifs: units, range, printed, recorded, swept, set by regress -------
+hi=(--algorithm host-initiated --nodes 4 --size 32x32 --scene scenes/blazek/spheres_16.json)
+usage_error host-latency-no-unit "--host-latency.*unit" "$zcube" run "${hi[@]}" --host-latency 1
+usage_error host-bandwidth-no-unit "--host-bandwidth.*unit" "$zcube" run "${hi[@]}" \
+  --host-bandwidth 2.8
+usage_error host-latency-negative "--host-latency" "$zcube" run "${hi[@]}" --host-latency -1us
+usage_error host-latency-above-1h "--host-latency '2h': above 1 h" "$zcube" run "${hi[@]}" \
+  --host-latency 2h
+usage_error host-bandwidth-below-1Bps "--host-bandwidth '0.5Bps': below 1 Bps" "$zcube" run \
+  "${hi[@]}" --host-bandwidth 0.5Bps
+usage_error host-bandwidth-platform "--host-bandwidth.*unit" "$zcube" platform --host-bandwidth 1
+usage_error sweep-host-bandwidth-no-unit "--host-bandwidth.*unit" "$zcube" sweep "${hi[@]}" \
+  --host-bandwidth 1MBps,2 --out "$tmp/sw4"
+usage_error regress-host-latency "5parsecs" "$zcube" regress --runs "$tmp/runs.json" \
+  --against tests/golden --set host-latency=5parsecs
+"$zcube" run "${hi[@]}" --host-latency 275us --host-bandwidth 2.8MBps --report "$tmp/hi.json" \
+  >"$tmp/hi.out" 2>&1
+rc=$?
+grep -q "what-if: --host-latency 275 us (host link start-up)" "$tmp/hi.out" &&
+  grep -q "what-if: --host-bandwidth 2.8 MB/s (host link bandwidth)" "$tmp/hi.out" &&
+  /usr/bin/python3 -c '
+import json, sys
+r = json.load(open(sys.argv[1]))
+w, m = r["what_if"], r["model"]
+assert sorted(w) == ["host_bandwidth_Bps", "host_latency_s"], w
+assert abs(w["host_latency_s"] - 275e-6) < 1e-18 and w["host_bandwidth_Bps"] == 2.8e6, w
+assert m["host_startup_s"] == w["host_latency_s"] and m["host_per_byte_s"] == 1 / 2.8e6, m
+' "$tmp/hi.json"
+expect host-link-printed-and-recorded $(( rc != 0 || $? != 0 )) "$(cat "$tmp/hi.out")"
+"$zcube" run "${hi[@]}" --fidelity analytic --report "$tmp/hi0.json" >/dev/null 2>&1
+expect host-link-default-run $?
+"$zcube" sweep "${hi[@]}" --fidelity analytic --host-latency 1ms,275us \
+  --host-bandwidth 1MBps,2.8MBps --no-plot --jobs 2 --out "$tmp/sw5" >"$tmp/out" 2>&1
+expect sweep-host-link-runs $? "$(tail -5 "$tmp/out")"
+/usr/bin/python3 - "$tmp/sw5" "$tmp/hi0.json" <<'EOF'
+import csv, json, sys
+rows = list(csv.DictReader(open(sys.argv[1] + "/sweep.csv")))
+assert len(rows) == 4 and "host-latency" in rows[0] and "host-bandwidth" in rows[0], rows[:1]
+t = {(r["host-latency"], r["host-bandwidth"]): float(r["virtual_s"]) for r in rows
+     if r["status"] == "ok"}
+assert len(t) == 4, rows
+# The default link (1 ms, 1 MB/s) is the run without the flags (to the CSV's 10 digits); a faster
+# link is faster.
+default = json.load(open(sys.argv[2]))["virtual_time_s"]
+assert abs(t[("1ms", "1MBps")] - default) <= 1e-9 * default, (t, default)
+assert t[("275us", "2.8MBps")] < t[("275us", "1MBps")] < t[("1ms", "1MBps")], t
+assert t[("275us", "2.8MBps")] < t[("1ms", "2.8MBps")] < t[("1ms", "1MBps")], t
+reps = json.load(open(sys.argv[1] + "/sweep.json"))["reports"]
+got = {(round(r["what_if"]["host_latency_s"] * 1e6, 6), r["what_if"]["host_bandwidth_Bps"])
+       for r in reps}
+assert got == {(1000, 1e6), (1000, 2.8e6), (275, 1e6), (275, 2.8e6)}, got
+EOF
+expect sweep-host-link-columns $?
+
 exit $fail

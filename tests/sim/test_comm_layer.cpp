@@ -304,6 +304,52 @@ TEST(Comm, FifoPerSourceAndTagAnySourceAndTheHostAsARank) {
              1e-12, "host to node 7");
 }
 
+// --host-latency and --host-bandwidth (docs/machines.md, the host link): a host-to-node-0 message
+// of n bytes takes host start-up + n / host bandwidth under the analytic fidelity, before and after
+// the what-if, and node 0's answer back as long; the report names them; the node channels keep
+// their figures.
+TEST(Overrides, HostLinkWhatIfsGiveTheHostMessagesClosedForm) {
+  const double n = 4096;
+  auto ha = std::make_shared<Algorithm>();
+  ha->name = "test";
+  ha->uses_host = true;
+  ha->node = [](NodeContext& ctx) {
+    if (ctx.rank() != 0) return;
+    Comm& c = ctx.comm();
+    c.send(c.host_rank(), 2, c.recv(c.host_rank(), 1));
+  };
+  ha->host = [n](NodeContext& ctx) {
+    ctx.comm().send(0, 1, Bytes(std::size_t(n)));
+    ctx.comm().recv(0, 2);
+  };
+  SimConfig h = sim_config("ipsc2", 2, Topology::Cube, Fidelity::Analytic);
+  h.custom = ha;
+  const auto before = run_simulation_isolated(h);
+  ASSERT_EQ(before.value("status", ""), "ok") << before.dump();
+  expect_rel(vtime(before), 2 * (1e-3 + n * 1e-6), 1e-12, "1 ms and 1 MB/s (the default link)");
+  EXPECT_TRUE(before["what_if"].empty()) << before["what_if"].dump();
+
+  h.overrides.host_latency_s = 275e-6;
+  h.overrides.host_bandwidth_Bps = 2.8e6;
+  const auto after = run_simulation_isolated(h);
+  ASSERT_EQ(after.value("status", ""), "ok") << after.dump();
+  const double one_way = 275e-6 + n / 2.8e6;
+  expect_rel(vtime(after), 2 * one_way, 1e-12, "--host-latency 275us --host-bandwidth 2.8MBps");
+  EXPECT_DOUBLE_EQ(after["what_if"]["host_latency_s"].get<double>(), 275e-6);
+  EXPECT_DOUBLE_EQ(after["what_if"]["host_bandwidth_Bps"].get<double>(), 2.8e6);
+  EXPECT_DOUBLE_EQ(after["model"]["host_startup_s"].get<double>(), 275e-6);
+  EXPECT_DOUBLE_EQ(after["model"]["host_per_byte_s"].get<double>(), 1 / 2.8e6);
+  // The node channels keep their figures.
+  EXPECT_EQ(after["model"]["per_byte_s"], before["model"]["per_byte_s"]);
+  EXPECT_EQ(after["model"]["startup_long_s"], before["model"]["startup_long_s"]);
+
+  // The flow fidelity charges the bytes through SimGrid's host-up/host-down links, set alike.
+  h.fidelity = Fidelity::Flow;
+  const auto flow = run_simulation_isolated(h);
+  ASSERT_EQ(flow.value("status", ""), "ok") << flow.dump();
+  expect_rel(vtime(flow), 2 * one_way, 1e-9, "flow");
+}
+
 TEST(Collectives, DeliverTheRightDataOnRingsOfEverySize) {
   for (int P = 2; P <= 16; ++P) {
     auto r = run_custom(
