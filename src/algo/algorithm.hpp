@@ -99,9 +99,11 @@ public:
   Phase phase(const std::string& name) { return Phase(*this, name); }
 
   // The paper's timed region starts here on this node (its timer read once the input is in place,
-  // docs/papers.md). The report's timed_s is the longest (finish - start) over the nodes; without
-  // a call the whole run is timed.
+  // docs/papers.md) and ends at end_timed_region, or when the node finishes if it never calls it
+  // (elastic). The report's timed_s is the longest (end - start) over the nodes that started one;
+  // without a start the whole run is timed.
   virtual void start_timed_region() = 0;
+  virtual void end_timed_region() = 0;
 
   // Modelled node memory: alloc throws OutOfNodeMemory when the node's capacity is exceeded.
   virtual void alloc(double bytes, const std::string& what) = 0;
@@ -130,6 +132,10 @@ struct Algorithm {
   bool renders_frames = false;     // draws --frames K pictures of the camera path
   bool needs_cube = false;         // runs on hypercubes only (--topology cube)
   bool untextured = false;         // renders untextured scenes only
+  // The one-node run its paper's speed-ups divide by (docs/papers.md): sequential for Charles et
+  // al., scanline for Kurc et al., node-initiated for Blazek. An algorithm that names itself is a
+  // reference: on one node, without options, it is a sweep's baseline.
+  std::string reference = "sequential";
   // Checks of its options against the node count, once the platform is known and before the
   // simulation starts (UsageError), e.g. pingpong's --from and --to.
   std::function<void(const AlgorithmOptions&, int nodes)> check_nodes;

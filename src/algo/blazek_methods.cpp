@@ -13,6 +13,8 @@ std::vector<Algorithm> blazek_algorithms() {
     a.node = node;
     a.options = std::move(options);
     a.untextured = true; // Blazek's renderer had no textures
+    // Ch. VI: "the time a task takes on one processor", the thesis's Algorithm 3 (docs/papers.md).
+    a.reference = "node-initiated";
     return a;
   };
   return {make("host-initiated",

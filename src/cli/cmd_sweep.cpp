@@ -64,8 +64,9 @@ static int cmd_sweep(std::vector<std::string> args) {
       ->capture_default_str();
   app.add_flag("--no-plot", no_plot, "skip the plot");
   app.add_flag("--baseline", baseline,
-               "also run the sequential renderer on one node for every combination of the other "
-               "flags, so every row gets speedup and efficiency");
+               "also run each algorithm's one-node reference (sequential; scanline for Kurc et "
+               "al.; node-initiated for Blazek) for every combination of the other flags, so "
+               "every row gets speedup and efficiency");
   if (int rc = parse(app, args); rc >= 0) return rc;
 
   std::vector<SweepAxis> axes;
@@ -92,8 +93,9 @@ static int cmd_sweep(std::vector<std::string> args) {
         "bytes, concurrent_volume_bytes, load_imbalance or phase:<name>)");
   if ((plot_y == "speedup" || plot_y == "efficiency") && !has_baseline)
     throw UsageError("--plot-y " + plot_y +
-                     ": the sweep has no sequential run on one node to compare with (add "
-                     "--baseline, or sequential to --algorithm and 1 to --nodes)");
+                     ": the sweep has no reference run on one node to compare with (add "
+                     "--baseline, or the reference (sequential, scanline, node-initiated) to "
+                     "--algorithm and 1 to --nodes)");
   prepare_sweep_dir(out); // before anything runs: no stale sweep.csv survives an interruption
   std::size_t invalid = 0;
   for (const auto& p : points)

@@ -87,8 +87,8 @@ nlohmann::json sweep_rows(const std::vector<SweepAxis>& axes, const std::vector<
     row["error"] = r.value("error", "");
     const bool ran = status == "ok";
     row["virtual_s"] = ran ? nlohmann::json(r["virtual_time_s"]) : nlohmann::json(nullptr);
-    // The paper's timed region (elastic's per-picture loop), else the whole run: what speed-ups
-    // divide, as in zcube run's paper line and zcube reproduce (docs/papers.md).
+    // The paper's timed region (elastic's per-picture loop, Kurc's Table 2 columns), else the
+    // whole run (Blazek): what speed-ups divide (docs/papers.md).
     row["timed_s"] = ran ? nlohmann::json(virtual_s(r)) : nlohmann::json(nullptr);
     row["wall_s"] = r.contains("host") ? r["host"]["wall_time_s"] : nlohmann::json(nullptr);
     const auto comm = r.value("communication", nlohmann::json::object());
@@ -133,12 +133,43 @@ std::string value_of(const SweepPoint& p, const char* flag, const char* def) {
   return it == p.values.end() || it->second.empty() ? def : it->second;
 }
 
-// The values of the axes that must match between a point and its baseline.
+// The one-node run the point's paper divides by (Algorithm::reference, docs/papers.md); an
+// unknown algorithm (an invalid point, which never runs) gets sequential.
+std::string reference_of(const SweepPoint& p) {
+  const std::string name = value_of(p, "algorithm", "sequential");
+  for (const auto& a : algorithms())
+    if (a.name == name) return a.reference;
+  return "sequential";
+}
+
+// Where the reference is stored in a baseline key: no flag has an empty name.
+const std::string kReferenceKey;
+
+// The values of the axes that must match between a point and its baseline, and the reference.
 std::map<std::string, std::string> baseline_key(const SweepPoint& p) {
   std::map<std::string, std::string> k;
   for (const auto& [f, v] : p.values)
     if (!algorithm_axis(f)) k[f] = v;
+  k[kReferenceKey] = reference_of(p);
   return k;
+}
+
+// sequential and scanline render on node 0 alone; Blazek's node-initiated uses every node.
+bool renders_on_node0_alone(const std::string& algorithm) {
+  return algorithm == "sequential" || algorithm == "scanline";
+}
+
+bool on_platform_file(const std::map<std::string, std::string>& values) {
+  const auto m = values.find("machine");
+  return m != values.end() && m->second.ends_with(".xml");
+}
+
+// A platform file states its node count: there the point runs on one node only if its algorithm
+// renders on node 0 alone.
+bool runs_on_one_node(const SweepPoint& p) {
+  return value_of(p, "nodes", "1") == "1" &&
+         (!on_platform_file(p.values) ||
+          renders_on_node0_alone(value_of(p, "algorithm", "sequential")));
 }
 
 } // namespace
@@ -147,8 +178,10 @@ bool is_baseline(const SweepPoint& p) {
   bool options = false;
   for (const auto& [f, v] : p.values)
     options = options || (algorithm_option(f) && !v.empty());
-  return value_of(p, "algorithm", "sequential") == "sequential" &&
-         value_of(p, "nodes", "1") == "1" && !options;
+  // A baseline point that cannot run (no configuration) still stands for its key: its rows get
+  // no speed-up rather than another run's.
+  return value_of(p, "algorithm", "sequential") == reference_of(p) && !options &&
+         (runs_on_one_node(p) || !p.config);
 }
 
 void add_baselines(const std::vector<SweepAxis>& axes, std::vector<SweepPoint>& points,
@@ -162,12 +195,19 @@ void add_baselines(const std::vector<SweepAxis>& axes, std::vector<SweepPoint>& 
   for (const auto& k : want) {
     if (std::find(have.begin(), have.end(), k) != have.end()) continue;
     auto flags = k;
-    flags["algorithm"] = "sequential";
-    // A platform file states its node count; sequential renders on node 0 alone, so on the file's
-    // P nodes it takes its one-node time.
-    const auto m = k.find("machine");
-    if (m == k.end() || !m->second.ends_with(".xml")) flags["nodes"] = "1";
+    flags.erase(kReferenceKey);
+    const std::string ref = k.at(kReferenceKey);
+    flags["algorithm"] = ref;
+    // A platform file states its node count; sequential and scanline render on node 0 alone, so
+    // on the file's P nodes they take their one-node time. node-initiated would use all P.
+    const bool file = on_platform_file(k);
+    if (!file) flags["nodes"] = "1";
     SweepPoint p = make_point(flags, scene);
+    if (file && !renders_on_node0_alone(ref)) {
+      p.config.reset();
+      p.error = "--machine " + k.at("machine") + ": the reference " + ref +
+                " on one node cannot run on a platform file (it states its node count)";
+    }
     for (const auto& ax : axes)
       if (!p.values.count(ax.flag)) p.values[ax.flag] = "";
     points.push_back(std::move(p));

@@ -49,11 +49,13 @@ std::vector<nlohmann::json> run_points(const std::vector<SweepPoint>& points,
 nlohmann::json sweep_rows(const std::vector<SweepAxis>& axes, const std::vector<SweepPoint>& points,
                           const std::vector<nlohmann::json>& reports);
 
-// The sequential run on one node with the same values as the point on every axis but the
-// algorithm, its options and the node count: the baseline of the point's speed-up.
+// The run of the point's reference (Algorithm::reference: sequential, scanline for Kurc et al.,
+// node-initiated for Blazek; docs/papers.md) on one node with the same values as the point on
+// every axis but the algorithm, its options and the node count: the baseline of its speed-up.
+// A baseline is a reference's own point on one node without algorithm options.
 bool is_baseline(const SweepPoint& p);
-// Appends, for every combination of the non-algorithm axes that has none, that baseline point
-// (zcube sweep --baseline). Its values on the algorithm option axes are "".
+// Appends, for every combination of the non-algorithm axes and reference that has none, that
+// baseline point (zcube sweep --baseline). Its values on the algorithm option axes are "".
 void add_baselines(const std::vector<SweepAxis>& axes, std::vector<SweepPoint>& points,
                    const std::string& scene);
 // Adds speedup = T(baseline) / T(point), T the timed region (timed_s), and efficiency = speedup /

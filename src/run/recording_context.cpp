@@ -30,6 +30,11 @@ void RecordingContext::start_timed_region() {
   stats_.timed = true;
 }
 
+void RecordingContext::end_timed_region() {
+  stats_.timed_end_s = comm_.now();
+  stats_.timed_ended = true;
+}
+
 void RecordingContext::alloc(double bytes, const std::string& what) {
   stats_.memory += bytes;
   stats_.peak_memory = std::max(stats_.peak_memory, stats_.memory);

@@ -27,6 +27,7 @@ public:
   void phase_begin(const std::string& name) final;
   void phase_end() final;
   void start_timed_region() final;
+  void end_timed_region() final;
   void alloc(double bytes, const std::string& what) final;
   void release(double bytes) final;
   void deliver_image(int frame, Framebuffer image) final;

@@ -24,6 +24,8 @@ void to_json(nlohmann::json& j, const NodeRecord& r) {
        {"peak_memory", r.stats.peak_memory},
        {"timed", r.stats.timed},
        {"timed_start_s", r.stats.timed_start_s},
+       {"timed_ended", r.stats.timed_ended},
+       {"timed_end_s", r.stats.timed_end_s},
        {"phase_order", r.phase_order},
        {"phase_totals", r.phase_totals},
        {"phase_work", work},
@@ -42,6 +44,8 @@ void from_json(const nlohmann::json& j, NodeRecord& r) {
   r.stats.peak_memory = j.at("peak_memory");
   r.stats.timed = j.value("timed", false);
   r.stats.timed_start_s = j.value("timed_start_s", 0.0);
+  r.stats.timed_ended = j.value("timed_ended", false);
+  r.stats.timed_end_s = j.value("timed_end_s", 0.0);
   r.phase_order = j.at("phase_order").get<std::vector<std::string>>();
   r.phase_totals = j.at("phase_totals").get<std::map<std::string, double>>();
   r.phase_work.clear();
@@ -145,12 +149,13 @@ void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, 
     busy_sum += s.busy_s;
   }
   const double busy_mean = P > 0 ? busy_sum / P : 0.0;
-  // The paper's timed region (docs/papers.md): the longest (finish - start) over the nodes that
-  // started one; absent when no node did (the whole run is timed).
+  // The paper's timed region (docs/papers.md): the longest (end - start) over the nodes that
+  // started one, the end being the node's finish unless it marked one; absent when no node
+  // started one (the whole run is timed).
   double timed_s = -1;
   for (int r = 0; r < P; ++r) {
     const NodeStats& s = nodes[std::size_t(r)].stats;
-    if (s.timed) timed_s = std::max(timed_s, s.finish_s - s.timed_start_s);
+    if (s.timed) timed_s = std::max(timed_s, s.timed_until_s() - s.timed_start_s);
   }
   if (timed_s >= 0) j["timed_s"] = timed_s;
   j["communication"] = {

@@ -24,6 +24,10 @@ struct NodeStats {
   std::shared_ptr<EventLog> log; // the node's timeline; null unless one was asked for
   bool timed = false;            // the node started the paper's timed region (start_timed_region)
   double timed_start_s = 0;      // when
+  bool timed_ended = false;      // the node ended it (end_timed_region) before finishing
+  double timed_end_s = 0;        // when
+  // The end of the node's timed region: end_timed_region's time, else the node's finish.
+  double timed_until_s() const { return timed_ended ? timed_end_s : finish_s; }
 };
 
 // A picture (or, partial, rows of one) handed over by a node.
