@@ -36,7 +36,7 @@ FLAG_LABELS = {"nodes": "nodes P", "latency": "message start-up (s)",
                "cost-scale": "cost multiplier", "frames": "frames", "packet": "polygons per packet"}
 COLUMN_LABELS = {"virtual_s": "virtual time of the run (s)",
                  "timed_s": "virtual time of the timed region (s)",
-                 "speedup": "speed-up over the sequential run on 1 node",
+                 "speedup": "speed-up over the paper's reference on 1 node",
                  "efficiency": "efficiency (speed-up / P)", "wall_s": "host wall time (s)",
                  "messages": "messages", "bytes": "bytes sent (B)",
                  "concurrent_volume_bytes": "concurrent communication volume (B)",
@@ -300,9 +300,11 @@ def sweep(path, x, y, out):
         sys.exit(f"plot_results.py: {path} has no column '{y}'")
     axes = [a["flag"] for a in doc["axes"]]
     rs = [r for r in all_rows if r.get("status") in ("ok", "out_of_memory")]
-    # The sequential baseline of a speed-up sweep is a point at (1, 1), not a series of its own.
-    if "algorithm" in all_rows[0] and any(r["algorithm"] != "sequential" for r in rs):
-        rs = [r for r in rs if r["algorithm"] != "sequential"]
+    # The baseline of a speed-up sweep (sequential, or Kurc et al.'s scanline: both render on node 0
+    # alone) is a point at (1, 1), not a series of its own (docs/papers.md).
+    refs = ("sequential", "scanline")
+    if "algorithm" in all_rows[0] and any(r["algorithm"] not in refs for r in rs):
+        rs = [r for r in rs if r["algorithm"] not in refs]
     varying = [c for c in axes if c != x and len({r[c] for r in rs}) > 1]
     g = defaultdict(list)
     for r in rs:
