@@ -3,6 +3,6 @@
 
 namespace zc {
 // The reference: node 0 renders every frame alone with the scanline z-buffer; speed-ups are
-// measured against it (DESIGN §6).
+// measured against it (docs/papers.md).
 Algorithm sequential_algorithm();
 } // namespace zc

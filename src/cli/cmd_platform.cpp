@@ -1,6 +1,5 @@
 // zcube platform: writes the SimGrid platform file of a machine model, with what-if figures a user
 // can keep and run (`zcube run --machine that.xml`).
-#include <fstream>
 #include <iostream>
 
 #include "cli/command.hpp"
@@ -8,6 +7,7 @@
 #include "machine/platform_xml.hpp"
 #include "run/run_flags.hpp"
 #include "sim/simulation.hpp"
+#include "util/output_file.hpp"
 
 namespace zc::cli {
 
@@ -55,6 +55,7 @@ static int cmd_platform(std::vector<std::string> args) {
     app.add_option("--" + std::string(k), given[k], help);
   app.add_option("-o,--output", out, "write to this file instead of standard output");
   if (int rc = parse(app, args); rc >= 0) return rc;
+  check_output_path(out, "--output"); // before any work: a missing directory says so
 
   std::string command = "zcube platform --machine " + flags["machine"] + " --nodes " +
                         flags["nodes"] + " --topology " + flags["topology"];
@@ -74,10 +75,7 @@ static int cmd_platform(std::vector<std::string> args) {
     std::cout << xml;
     return 0;
   }
-  std::ofstream f(out);
-  f << xml;
-  f.close();
-  if (!f) throw InputError(out, 0, "cannot write the platform file");
+  write_text_file(out, xml); // names the file and the system's reason (e.g. a full disk)
   return 0;
 }
 

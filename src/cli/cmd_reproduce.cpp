@@ -46,7 +46,7 @@ static int cmd_reproduce(std::vector<std::string> args) {
   if (int rc = parse(app, args); rc >= 0) return rc;
   o.plots = !no_plots;
   o.calibration = !no_calibration;
-  if (which == "charles95") which = "charles"; // the names of DESIGN §3
+  if (which == "charles95") which = "charles"; // the names docs/index.md gives the papers
   if (which == "blazek91") which = "blazek";
   if (which != "all") o.papers = {which};
 #ifdef ZCUBE_HAVE_MPI

@@ -120,6 +120,19 @@ void duplex_nodes_zone(std::ostringstream& x, const std::string& id, const Netwo
 
 } // namespace
 
+// What SimGrid reads from a file, as its header comment says: a cluster's bw and lat, or (a machine
+// whose link directions share a total rate, the Volvox) one link per direction and a shared one.
+constexpr const char* kReadsCluster =
+    "     SimGrid reads: channel bandwidth and latency (cluster bw, lat; lat is the per-hop\n"
+    "     cost), the CPU clock (speed), the host link, and the start-up as SMPI's receive\n"
+    "     overhead smpi/or (start-up = smpi/or + lat + 16 envelope bytes / bw; a section per\n"
+    "     protocol).\n";
+constexpr const char* kReadsDuplexLinks =
+    "     SimGrid reads: channel bandwidth and latency (links ch-a-b, one a direction; lat is\n"
+    "     the per-hop cost) and the shared link duplex-a-b under both directions, the CPU\n"
+    "     clock (speed), the host link, and the start-up as SMPI's receive overhead smpi/or\n"
+    "     (start-up = smpi/or + lat + 16 envelope bytes / bw; a section per protocol).\n";
+
 std::string duplex_link_name(int a, int b) {
   return kDuplexLinkPrefix + std::to_string(std::min(a, b)) + "-" + std::to_string(std::max(a, b));
 }
@@ -145,10 +158,8 @@ std::string platform_xml(const MachineSpec& spec, int nodes, Topology topo,
                   " --topology " + topology_name(topo) + "`"
             : spec.generated_by)
     << "; edit it as any SimGrid platform.\n"
-    << "     SimGrid reads: channel bandwidth and latency (cluster bw, lat; lat is the per-hop\n"
-    << "     cost), the CPU clock (speed), the host link, and the start-up as SMPI's receive\n"
-    << "     overhead smpi/or (start-up = smpi/or + lat + 16 envelope bytes / bw; a section per\n"
-    << "     protocol). zcube.* properties and their meaning: platforms/README.md. -->\n"
+    << (n.half_duplex_limited() ? kReadsDuplexLinks : kReadsCluster)
+    << "     zcube.* properties and their meaning: platforms/README.md. -->\n"
     << "<platform version=\"4.1\">\n"
     << "  <config>\n"
     << "    <prop id=\"" << kStartupConfig << "\" value=\"" << startup_sections(n) << "\"/>\n"

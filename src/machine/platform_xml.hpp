@@ -1,5 +1,5 @@
 #pragma once
-// SimGrid 4.1 platform files of the modelled machines (DESIGN §5; platforms/README.md). One zone
+// SimGrid 4.1 platform files of the modelled machines (platforms/README.md). One zone
 // per machine: the nodes are a SimGrid TORUS cluster (a hypercube of dimension d is the torus
 // 2x2x...x2, whose dimension-order routing is e-cube; a ring is the 1-D torus P), the host computer
 // srm is a zone of its own linked to node0 by host-up/host-down. SimGrid reads every figure it

@@ -1,7 +1,7 @@
 #pragma once
 // `zcube run --backend mpi`: the same algorithm code as the simulator, on the MPI processes of a
-// real machine. Every rank calls run_mpi; rank 0 gets the report (the schema of DESIGN §4, with
-// measured wall-clock times: "measured": true, "backend": "mpi") and the pictures.
+// real machine. Every rank calls run_mpi; rank 0 gets the report (the simulator's report schema,
+// with measured wall-clock times: "measured": true, "backend": "mpi") and the pictures.
 #include "run/config.hpp"
 
 namespace zc {

@@ -1,7 +1,7 @@
 #pragma once
 // What to run, whatever the backend (SimGrid simulation or MPI processes): the machine with its
 // what-if overrides, the algorithm with its options, the scene; and what a run returns, the report
-// of DESIGN §4 and the delivered pictures.
+// of a report and the delivered pictures.
 #include <memory>
 #include <optional>
 #include <string>

@@ -3,7 +3,7 @@
 
 namespace zc {
 
-// How messages are charged (DESIGN §5; platforms/README.md has the details and run costs):
+// How messages are charged (platforms/README.md has the details and run costs):
 //  analytic: every message costs its closed form, no contention;
 //  flow:     SimGrid's flow model shares each channel fairly between the messages crossing it;
 //  circuit:  DCM circuit switching: the channels of the e-cube path are held, in dimension order,

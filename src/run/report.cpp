@@ -132,7 +132,7 @@ void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, 
                              {"phase_work", pw}});
     if (!rec.metrics.empty()) j["per_node"].back()["metrics"] = rec.metrics;
   }
-  // Defaults of the DESIGN §4 keys an algorithm may refine through its metrics (Kurc et al.
+  // Defaults of the report keys an algorithm may refine through its metrics (Kurc et al.
   // replace both by their own definitions: the sum over communication steps of the largest
   // volume of a step, and the imbalance of the merge loads).
   //  concurrent_volume_bytes: the largest volume one node sent (a lower bound of the time-critical

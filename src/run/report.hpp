@@ -1,6 +1,6 @@
 #pragma once
-// The report of DESIGN §4 from what each node recorded: shared by the SimGrid backend (virtual
-// times) and any other backend (measured times), so both write the same schema.
+// The report (docs/user-guide.md, "One run") from what each node recorded: shared by the SimGrid
+// backend (virtual times) and any other backend (measured times), so both write the same schema.
 #include <map>
 #include <memory>
 #include <string>

@@ -4,12 +4,12 @@
 // destination's Inbox until its arrival, and ranks block on a SimGrid semaphore (with a timeout)
 // until the earliest arrival that concerns them (or until a notification). Circuit contention is
 // decided by zcube's own channel bookkeeping: the channels of a hold are acquired one by one in the
-// global order, each granted first come, first served, and held for the whole hold (DESIGN §5); a
-// single daemon actor wakes up at the releases that someone waits for. On links whose directions
-// slow each other down (the Volvox's T800 links), the same actor dates the end of each hop's bytes
-// as the reverse directions' traffic starts and stops (DuplexLinks), under analytic as under
-// circuit. Only the flow fidelity needs SimGrid's bandwidth sharing, so there one actor per message
-// crosses the links.
+// global order, each granted first come, first served, and held for the whole hold
+// (platforms/README.md); a single daemon actor wakes up at the releases that someone waits for. On
+// links whose directions slow each other down (the Volvox's T800 links), the same actor dates the
+// end of each hop's bytes as the reverse directions' traffic starts and stops (DuplexLinks), under
+// analytic as under circuit. Only the flow fidelity needs SimGrid's bandwidth sharing, so there one
+// actor per message crosses the links.
 #include <cstdint>
 #include <deque>
 #include <queue>

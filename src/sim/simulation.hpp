@@ -1,7 +1,7 @@
 #pragma once
 // One simulation: a platform (built-in machine or XML file) with what-if overrides, an algorithm,
-// a scene; runs the node (and host) actors on SimGrid and returns the report of DESIGN §4.
-// SimGrid allows one engine per process: run_simulation may be called once per process
+// a scene; runs the node (and host) actors on SimGrid and returns the report (docs/user-guide.md,
+// "One run"). SimGrid allows one engine per process: run_simulation may be called once per process
 // (run_simulation_isolated forks for callers that need more, such as tests and sweeps).
 #include <memory>
 #include <optional>

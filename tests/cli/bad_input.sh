@@ -40,6 +40,9 @@ echo '{"runs": [{"name": "a", "bogus": "1"}]}' >"$tmp/runs2.json"
 check regress-bad-flag "bogus" "$zcube" regress --runs "$tmp/runs2.json" --against "$tmp"
 check regress-no-dir "nope" "$zcube" regress --against "$tmp/nope" --with "$tmp"
 check reproduce-unknown-paper "paper" "$zcube" reproduce frobnicate
+# zcube platform -o names the reason it cannot write (checked before any work).
+check platform-output-no-dir "directory '/nonexistent' does not exist" "$zcube" platform -o /nonexistent/x.xml
+check platform-output-is-dir "--output" "$zcube" platform -o "$tmp"
 # Bad platform files (issue 17): one line naming the file and the attribute, exit 2, before the
 # simulation; the generated platform of a built-in machine never leaves a temporary file.
 for f in "$data"/bad_platform/*.xml; do

@@ -480,7 +480,7 @@ TEST(NodeContext, PhasesMemoryAndFallbackReportKeys) {
   ASSERT_GT(os, 0);
   for (int k = 0; k < 4; ++k)
     EXPECT_EQ(r["per_node"][k]["peak_memory_bytes"].get<double>(), os + 1000.0 * (k + 1));
-  // DESIGN §4 keys present even when the algorithm does not refine them.
+  // Report keys present even when the algorithm does not refine them.
   EXPECT_EQ(r["communication"]["concurrent_volume_bytes"], 777);
   expect_rel(r["load_imbalance"].get<double>(), 3000.0 / 2500.0, 1e-12, "busy imbalance");
   for (const char* k : {"machine", "platform", "nodes", "topology", "fidelity", "algorithm",
