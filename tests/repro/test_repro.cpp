@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "csv.hpp"
+
 #include "machine/cpu_model.hpp"
 #include "machine/machine.hpp"
 #include "repro/paper_figures.hpp"
@@ -25,29 +27,7 @@ namespace {
 
 const std::string kRoot = ZCUBE_SOURCE_DIR;
 
-// Rows of a committed CSV file as maps.
-std::vector<std::map<std::string, std::string>> read_csv(const std::string& path) {
-  std::ifstream f(path);
-  std::vector<std::map<std::string, std::string>> rows;
-  std::string line;
-  std::vector<std::string> header;
-  while (std::getline(f, line)) {
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    for (std::string c; std::getline(ss, c, ',');)
-      cells.push_back(c);
-    if (line.ends_with(",")) cells.push_back("");
-    if (header.empty()) {
-      header = cells;
-      continue;
-    }
-    std::map<std::string, std::string> row;
-    for (std::size_t i = 0; i < header.size() && i < cells.size(); ++i)
-      row[header[i]] = cells[i];
-    rows.push_back(row);
-  }
-  return rows;
-}
+using test::read_csv;
 
 } // namespace
 

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "csv.hpp"
 #include "repro/simulate.hpp"
 #include "repro/sweep.hpp"
 
@@ -17,27 +18,7 @@ namespace {
 
 const std::string kRoot = ZCUBE_SOURCE_DIR;
 
-// The field `column` of the row of a committed CSV whose leading cells are `key`.
-std::string csv_cell(const std::string& path, const std::vector<std::string>& key,
-                     const std::string& column) {
-  std::ifstream f(path);
-  std::string line;
-  std::vector<std::string> header;
-  while (std::getline(f, line)) {
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    for (std::string c; std::getline(ss, c, ',');)
-      cells.push_back(c);
-    if (header.empty()) {
-      header = cells;
-      continue;
-    }
-    if (!std::equal(key.begin(), key.end(), cells.begin())) continue;
-    const auto at = std::find(header.begin(), header.end(), column);
-    if (at != header.end()) return cells.at(std::size_t(at - header.begin()));
-  }
-  return "";
-}
+using test::csv_cell;
 
 // The longest sum of `phases` over the nodes of a report: Table 2's columns on the critical node.
 double critical_node_sum(const nlohmann::json& r, const std::vector<std::string>& phases) {
@@ -137,12 +118,14 @@ TEST(SweepReference, KurcSweepDividesScanlineByTheTableTwoColumns) {
   const double ref = reps[2]["timed_s"].get<double>();
   EXPECT_DOUBLE_EQ(rows[1]["speedup"].get<double>(), ref / reps[1]["timed_s"].get<double>());
   const std::string csv = kRoot + "/results/kurc/speedup.csv";
-  const std::string committed = csv_cell(csv, {"pair-rs", "1pot", "400", "1"}, "speedup");
+  const std::string committed = csv_cell(
+      csv, {{"scheme", "pair-rs"}, {"scene", "1pot"}, {"size", "400"}, {"nodes", "1"}}, "speedup");
   ASSERT_FALSE(committed.empty());
   EXPECT_NEAR(rows[0]["speedup"].get<double>(), std::stod(committed), 6e-5);
   // At 4 nodes results/kurc sums each column's slowest node, which no single node need be:
   // render_s is at least the critical node's sum.
-  const std::string render = csv_cell(csv, {"pair-rs", "1pot", "400", "4"}, "render_s");
+  const std::string render = csv_cell(
+      csv, {{"scheme", "pair-rs"}, {"scene", "1pot"}, {"size", "400"}, {"nodes", "4"}}, "render_s");
   ASSERT_FALSE(render.empty());
   EXPECT_GE(std::stod(render) * (1 + 1e-6), reps[1]["timed_s"].get<double>());
 }
