@@ -58,7 +58,9 @@ std::string top_readme(const ReproduceOptions& o, double wall_s, std::size_t poi
          "The same runs under the three network models; the error is against `circuit` (the "
          "reference: each message holds its channels in dimension order, as the iPSC's "
          "Direct-Connect Module). `analytic` ignores contention, `flow` shares bandwidth "
-         "(SimGrid's CM02). `paper_rel_error` is against the seeds' figure where one exists "
+         "(SimGrid's CM02). `virtual_s` is the paper's timed region where the algorithm marks one "
+         "(Kurc's three Table 2 phases, elastic's per-picture loop; docs/papers.md), else the "
+         "whole run. `paper_rel_error` is against the seeds' figure where one exists "
          "(Kurc Table 2's pixel merging at 16 nodes). Wall times are the host's and vary from run "
          "to run.\n\n" +
          fidelity_md;
