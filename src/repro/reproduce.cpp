@@ -15,6 +15,7 @@
 #include "repro/table.hpp"
 #include "run/batch.hpp"
 #include "util/error.hpp"
+#include "util/output_file.hpp"
 
 namespace zc {
 
@@ -97,16 +98,6 @@ std::string config_key(const SimConfig& c) {
   return j.dump();
 }
 
-// The output directory exists (or is made) and is a directory, before anything runs.
-void check_out_dir(const std::string& out) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (fs::exists(out, ec) && !fs::is_directory(out, ec))
-    throw UsageError("--out " + out + ": exists and is not a directory");
-  fs::create_directories(out, ec);
-  if (ec) throw UsageError("--out " + out + ": cannot create the directory (" + ec.message() + ")");
-}
-
 } // namespace
 
 std::string plan_directory(const ReproduceOptions& o, const PaperPlan& p, std::string* note) {
@@ -122,7 +113,7 @@ std::string plan_directory(const ReproduceOptions& o, const PaperPlan& p, std::s
 
 int reproduce(const ReproduceOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
-  if (o.write) check_out_dir(o.out);
+  if (o.write) prepare_output_dir(o.out); // before anything runs
   std::vector<PaperPlan> plans;
   for (const auto& p : o.papers) {
     if (p == "kurc")

@@ -21,6 +21,15 @@ void check_output_path(const std::string& path, const std::string& flag) {
     throw UsageError(flag + " '" + path + "': directory '" + dir.string() + "' does not exist");
 }
 
+void prepare_output_dir(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw UsageError("--out " + dir + ": exists and is not a directory");
+  fs::create_directories(dir, ec);
+  if (ec) throw UsageError("--out " + dir + ": cannot create the directory (" + ec.message() + ")");
+}
+
 void write_text_file(const std::string& path, const std::string& text) {
   auto fail = [&](int err) {
     throw std::runtime_error("cannot write '" + path + "': " + std::strerror(err));

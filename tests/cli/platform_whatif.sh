@@ -6,13 +6,8 @@
 set -u
 zcube=$1
 src=$2
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail=0
-bad() {
-  echo "FAIL $*"
-  fail=1
-}
+# shellcheck source=../support/check_lib.sh
+. "$src/tests/support/check_lib.sh"
 whatif=(--latency 27.5us --bandwidth 28MBps --cpu-scale 0.25)
 "$zcube" platform --machine ipsc2 --nodes 16 "${whatif[@]}" -o "$tmp/w.xml" || bad "platform -o"
 grep -q 'speed="64Mf"' "$tmp/w.xml" || bad "--cpu-scale 0.25 is not a 64 MHz clock"

@@ -5,13 +5,8 @@ set -u
 zcube=$1 mpirun=$2 src=$3 what=$4
 # shellcheck source=../../scripts/openmpi_env.sh
 . "$src/scripts/openmpi_env.sh"
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail=0
-bad() {
-  echo "FAIL $*"
-  fail=1
-}
+# shellcheck source=../support/check_lib.sh
+. "$src/tests/support/check_lib.sh"
 mpi() { # np args...
   local np=$1
   shift

@@ -7,13 +7,8 @@ set -u
 zcube=$1 src=$2 mpirun=${3:-}
 py=/usr/bin/python3
 [ -x "$py" ] || py=python3
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-fail=0
-bad() {
-  echo "FAIL $*"
-  fail=1
-}
+# shellcheck source=../support/check_lib.sh
+. "$src/tests/support/check_lib.sh"
 
 for p in 1 2 16 32; do
   "$zcube" run --algorithm pair-rs --scene "$src/scenes/kurc/2pot.json" --size 96x96 --nodes $p \
