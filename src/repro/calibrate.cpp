@@ -264,7 +264,7 @@ std::vector<double> charles_speedups(const CostTable& i860, const CalibrationOpt
     c.machine = plats.back()->path();
     c.nodes = nodes;
     c.algorithm = algo;
-    c.scene_path = o.root + "/scenes/teapot.json";
+    c.scene_path = o.root + "/" + kCharlesTeapotScene;
     c.width = c.height = kCharlesTeapotSize;
     c.compare_with_sequential = false;
     cfgs.push_back(c);

@@ -65,7 +65,7 @@ bool sized(const nlohmann::json& r, int n) {
 const CharlesSpeedupFigure* charles_match(const nlohmann::json& r) {
   if (!is(r, "algorithm", "elastic") || !is(r, "machine", "ipsc860") ||
       !is(r, "topology", "cube") || !sized(r, kCharlesTeapotSize) ||
-      scene_key(r) != "scenes/teapot")
+      scene_key(r) != "charles/teapot")
     return nullptr;
   for (const auto& f : charles_teapot_speedups())
     if (r.value("nodes", 0) == f.nodes) return &f;

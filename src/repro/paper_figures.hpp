@@ -1,6 +1,6 @@
 #pragma once
-// The figures the papers print (docs/index.md cites them), as data: the calibration's targets and the
-// paper column of reports and of `zcube reproduce`. Held-out figures are not here, by design.
+// The figures the papers print (docs/index.md cites them), as data: the calibration's targets and
+// the paper column of reports and of `zcube reproduce`. Held-out figures are not here, by design.
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,11 +30,14 @@ struct CharlesSpeedupFigure {
 };
 const std::vector<CharlesSpeedupFigure>& charles_teapot_speedups();
 constexpr int kCharlesTeapotSize = 512;
+// Charles et al.'s teapot (§5-§6): Newell's patches framed so that Table 1 is matched
+// (scripts/charles_scenes.py, scenes/README.md), relative to the repository root.
+constexpr const char* kCharlesTeapotScene = "scenes/charles/teapot.json";
 
 // The paper figures a run corresponds to (empty when none): a list of
 // {"source", "quantity", "phase"?, "paper", "predicted"?, "rel_error"?}. Matching is on
 // algorithm, machine, node count, topology, image size and scene file (scenes/kurc/<name>.json,
-// scenes/teapot.json). `sequential_time_s`, when given, completes the speed-up figures.
+// scenes/charles/teapot.json). `sequential_time_s`, when given, completes the speed-up figures.
 nlohmann::json paper_figures_for(const nlohmann::json& report,
                                  std::optional<double> sequential_time_s = std::nullopt);
 // True when the run matches a speed-up figure, whose prediction needs the sequential time.

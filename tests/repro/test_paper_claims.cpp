@@ -6,6 +6,7 @@
 #include <map>
 #include <string>
 
+#include "repro/paper_figures.hpp"
 #include "sim/simulation.hpp"
 
 using namespace zc;
@@ -53,9 +54,9 @@ struct CharlesRuns {
     static const CharlesRuns r = [] {
       CharlesRuns c;
       c.seq_skull = run("ipsc860", 1, "sequential", "scenes/bone.json", 512);
-      c.seq_pot = run("ipsc860", 1, "sequential", "scenes/teapot.json", 512);
+      c.seq_pot = run("ipsc860", 1, "sequential", kCharlesTeapotScene, 512);
       c.skull = run("ipsc860", 16, "elastic", "scenes/bone.json", 512);
-      c.pot = run("ipsc860", 16, "elastic", "scenes/teapot.json", 512);
+      c.pot = run("ipsc860", 16, "elastic", kCharlesTeapotScene, 512);
       c.ring = run("ipsc860", 16, "elastic", "scenes/bone.json", 512, Topology::Ring);
       return c;
     }();
@@ -89,9 +90,9 @@ TEST(PaperClaims, CharlesSkullRingBelowHypercube) {
 }
 
 // "When we use an hypercube of 16 processors we go [held out] times faster while the speed-up of
-// the teapot is limited to 8.3". Not reproduced (skull 5.79, teapot 8.11): the stand-in carries
-// 117 us of work per vertex on the wire against the teapot's 415 us, and no plausible CPU or
-// network setting reverses the order (docs/papers.md, "Charles's skull against the teapot", the
+// the teapot is limited to 8.3". Not reproduced (skull 5.79, Table 1's teapot 7.41): the stand-in
+// carries 117 us of work per vertex on the wire against the teapot's 317 us, and no plausible CPU
+// or network setting reverses the order (docs/papers.md, "Charles's skull against the teapot", the
 // measured what-ifs). Disabled for that documented reason; never tuned to the held-out figure.
 TEST(PaperClaims, DISABLED_CharlesSkullSpeedupAboveTeapotOn16CubeNodes) {
   const auto& c = CharlesRuns::get();

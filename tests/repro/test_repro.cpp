@@ -167,8 +167,12 @@ TEST(PaperFigures, CharlesSpeedupNeedsTheSequentialTime) {
                       {"nodes", 16},
                       {"virtual_time_s", 1.0},
                       {"phases", nlohmann::json::array()},
-                      {"scene", {{"path", "scenes/teapot.json"}, {"width", 512}, {"height", 512}}}};
+                      {"scene", {{"path", kCharlesTeapotScene}, {"width", 512}, {"height", 512}}}};
   EXPECT_TRUE(needs_sequential_time(r));
+  // The default teapot is not the paper's (Table 1 frames Charles's): no figure.
+  r["scene"]["path"] = "scenes/teapot.json";
+  EXPECT_FALSE(needs_sequential_time(r));
+  r["scene"]["path"] = kCharlesTeapotScene;
   auto f = paper_figures_for(r);
   ASSERT_EQ(f.size(), 1u);
   EXPECT_FALSE(f[0].contains("predicted"));
@@ -189,7 +193,7 @@ TEST(PaperFigures, AWhatIfRunsFiguresAreMarked) {
       {"virtual_time_s", 1.0},
       {"phases", nlohmann::json::array()},
       {"what_if", nlohmann::json::object()},
-      {"scene", {{"path", kRoot + "/scenes/teapot.json"}, {"width", 512}, {"height", 512}}}};
+      {"scene", {{"path", kRoot + "/" + kCharlesTeapotScene}, {"width", 512}, {"height", 512}}}};
   auto f = paper_figures_for(r, 8.3);
   ASSERT_EQ(f.size(), 1u) << r.dump();
   EXPECT_FALSE(f[0].contains("what_if"));
