@@ -1,57 +1,86 @@
 #!/usr/bin/env bash
-# Measured (MPI backend, this machine) against predicted (the simulator on the platform
-# `zcube probe` measured), P = 1, 2, 4: writes results/mpi/README.md.
+# The MPI backend on this machine against the simulator's prediction (results/mpi/README.md):
+#   1. probe: `mpirun -np 2 zcube probe` times zcube's own loops and a ping-pong, and writes a
+#      platform of this machine for 1, 2 and 4 nodes;
+#   2. predict: every workload simulated on that platform, before anything is measured;
+#   3. measure: every workload run RUNS times on the MPI backend (P = 1, 2, and 4 oversubscribed);
+#   4. compare: medians of the measured runs, their spread, phase by phase (scripts/mpi_compare.py).
+# Nothing of the measured runs enters the prediction. About 4 minutes on 2 cores.
 # usage: scripts/mpi_vs_model.sh [zcube=build/zcube] [out=results/mpi]
+#   RUNS=5 (runs per point), QUICK=1 (small workloads, one run each: tests/mpi),
+#   ZCUBE_MPI_CLOCK=cpu (time phases on the processes' CPU time, on a machine others load)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 zcube=$(realpath "${1:-build/zcube}")
 out=${2:-results/mpi}
-mkdir -p "$out"
+runs=${RUNS:-5}
+mkdir -p "$out/predicted"
 # shellcheck source=openmpi_env.sh
 . scripts/openmpi_env.sh
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-cores=$(nproc)
-# Probe with as many ranks as cores (more would time the CPU while sharing it).
-np=$((cores < 2 ? 2 : cores))
-mpirun --oversubscribe -np $np "$zcube" probe --out "$out/cluster.xml" --nodes 1,2,4 \
-  --json "$out/probe.json" >"$tmp/probe.txt"
-cases=("elastic|--algorithm elastic --size 512x512"
-  "pair-rs|--algorithm pair-rs --scene scenes/kurc/2pot.json --size 400x400")
+
+# name|extra ranks (a host computer)|arguments. Each takes 1-5 s on one rank of a 2020s core.
+if [ "${QUICK:-0}" = 1 ]; then
+  runs=1
+  workloads=("elastic|0|--algorithm elastic --scene scenes/bunny.json --size 256x256 --frames 2"
+    "pair-rs|0|--algorithm pair-rs --scene scenes/kurc/2pot.json --size 512x512"
+    "zbuf-exc|0|--algorithm zbuf-exc --scene scenes/kurc/2pot.json --size 512x512"
+    "node-initiated|1|--algorithm node-initiated --scene scenes/blazek/thesis_spheres_16.json --size 256x256")
+  seconds=0.02
+else
+  workloads=("elastic|0|--algorithm elastic --scene scenes/bunny.json --size 1024x1024 --frames 40"
+    "pair-rs|0|--algorithm pair-rs --scene scenes/bunny.json --size 5120x5120"
+    "zbuf-exc|0|--algorithm zbuf-exc --scene scenes/bunny.json --size 5120x5120"
+    "node-initiated|1|--algorithm node-initiated --scene scenes/blazek/thesis_spheres_1024.json --size 512x512")
+  seconds=0.2
+fi
+nodes=(1 2 4)
 {
-  echo "# The MPI backend on this machine against the simulator's prediction"
-  echo
-  echo "Written by \`scripts/mpi_vs_model.sh\` on $(hostname) ($cores cores, $(date -u +%F))."
-  echo "The platform is \`mpirun -np $np zcube probe --nodes 1,2,4\` (cluster-P.xml here);"
-  echo "predictions use \`--fidelity analytic\` (a switched cluster has no hypercube channels to"
-  echo "contend for). **Measured times at P > $cores are oversubscribed**: ranks share cores, so"
-  echo "they are pessimistic and noisy; the prediction assumes one core per rank."
-  echo
-  echo '```'
-  cat "$tmp/probe.txt"
-  echo '```'
-  echo
-  echo "| algorithm | P | measured (s) | predicted (s) | error |"
-  echo "|---|---|---|---|---|"
-} >"$out/README.md"
-details=""
-for c in "${cases[@]}"; do
-  name=${c%%|*}
-  args=${c#*|}
-  for p in 1 2 4; do
+  echo "host=$(hostname)"
+  echo "cores=$(nproc)"
+  echo "date=$(date -u +%FT%TZ)"
+  echo "clock=${ZCUBE_MPI_CLOCK:-wall}"
+  echo "runs=$runs"
+  echo "load_before=$(cut -d' ' -f1-3 /proc/loadavg)"
+} >"$out/conditions.txt"
+
+# 1. The probe (two ranks: the network needs a peer; the CPU loops run on both and are averaged).
+mpirun -np 2 "$zcube" probe --out "$out/cluster.xml" --nodes 1,2,4 --json "$out/probe.json" \
+  --seconds "$seconds" >"$out/probe.txt"
+
+# 2. Predictions, before any measured run.
+for w in "${workloads[@]}"; do
+  IFS='|' read -r name host args <<<"$w"
+  for p in "${nodes[@]}"; do
     # shellcheck disable=SC2086
-    mpirun --oversubscribe -np $p "$zcube" run --backend mpi $args --report "$tmp/m.json" >/dev/null
-    # shellcheck disable=SC2086
-    "$zcube" run --machine "$out/cluster-$p.xml" --fidelity analytic $args --report "$tmp/p.json" >/dev/null
-    "$zcube" compare --measured "$tmp/m.json" --predicted "$tmp/p.json" >"$tmp/cmp"
-    total=$(grep "^| total |" "$tmp/cmp" | awk -F'|' '{print $3 "|" $4 "|" $5}')
-    echo "| $name | $p |$total|" >>"$out/README.md"
-    details+=$'\n'"### $name, P = $p"$'\n\n'"$(tail -n +3 "$tmp/cmp")"$'\n'
+    "$zcube" run --machine "$out/cluster-$p.xml" --fidelity analytic $args --nodes $p \
+      --report "$out/predicted/$name-$p.json" >/dev/null
   done
 done
-{
-  echo
-  echo "## Phase by phase (zcube compare)"
-  echo "$details"
-} >>"$out/README.md"
+
+# 3. Measured runs (P + 1 processes for a method with a host computer).
+echo "workload,nodes,processes,run,phase,seconds" >"$out/measured.csv"
+for w in "${workloads[@]}"; do
+  IFS='|' read -r name host args <<<"$w"
+  for p in "${nodes[@]}"; do
+    np=$((p + host))
+    for i in $(seq 1 "$runs"); do
+      # shellcheck disable=SC2086
+      mpirun -np $np "$zcube" run --backend mpi $args --report "$tmp/m.json" >/dev/null
+      python3 - "$tmp/m.json" "$name" "$p" "$np" "$i" >>"$out/measured.csv" <<'PY'
+import json, sys
+r, name, p, np, i = sys.argv[1:]
+j = json.load(open(r))
+for ph in j["phases"]:
+    print(f"{name},{p},{np},{i},{ph['name']},{ph['max_s']!r}")
+print(f"{name},{p},{np},{i},total,{j['virtual_time_s']!r}")
+PY
+    done
+  done
+done
+echo "load_after=$(cut -d' ' -f1-3 /proc/loadavg)" >>"$out/conditions.txt"
+
+# 4. The comparison.
+python3 scripts/mpi_compare.py "$out" "$(nproc)"
 echo "wrote $out/README.md"

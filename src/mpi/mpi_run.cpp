@@ -8,6 +8,7 @@
 #include "mpi/mpi_comm.hpp"
 #include "mpi/mpi_context.hpp"
 #include "mpi/mpi_session.hpp"
+#include "mpi/probe_cpu.hpp"
 #include "scene/load.hpp"
 #include "util/error.hpp"
 
@@ -89,10 +90,14 @@ SimResult run_mpi(const SimConfig& cfg) {
   lo.width = cfg.width;
   lo.height = cfg.height;
   const Scene scene = load_scene(cfg.scene_path, lo);
+  // The memory a node's buffers will need, mapped before the clock starts (mpi/probe_cpu.hpp): 24
+  // bytes a pixel hold a full-screen z-buffer and a picture's worth of pixel records at once.
+  premap_heap((std::size_t(64) << 20) + 24 * std::size_t(scene.width) * std::size_t(scene.height));
 
   NodeStats stats;
   if (cfg.timeline) stats.log = std::make_shared<EventLog>();
   std::vector<FrameImage> images;
+  MpiComm::clock_name(); // a bad ZCUBE_MPI_CLOCK is a usage error before anything runs
   MpiComm comm(MPI_COMM_WORLD, P, cfg.topology, stats);
   MpiContext ctx(comm, stats, scene, options, cfg.overrides.memory_bytes.value_or(0.0), images);
   MPI_Barrier(MPI_COMM_WORLD);
@@ -133,6 +138,7 @@ SimResult run_mpi(const SimConfig& cfg) {
   nlohmann::json& j = res.report;
   j["backend"] = "mpi";
   j["measured"] = true;
+  j["clock"] = MpiComm::clock_name();
   add_run_header(
       j, {"mpi", "MPI_COMM_WORLD", topology_name(cfg.topology), "measured", cfg.scene_path, P}, cfg,
       algo.name, scene);

@@ -1,15 +1,15 @@
 #pragma once
 // `mpirun -np P zcube probe --out cluster.xml`: measures the machine the MPI processes run on and
 // writes a zcube platform of it, so `zcube run --machine cluster.xml` predicts it.
-//  - Network: ping-pong between rank 0 and every other rank over message sizes 0 B..1 MiB; the
-//    one-way time is half the best round trip of several. Short start-up = the mean one-way time
-//    of messages up to 100 B; long start-up and per-byte cost = least squares over the larger
-//    ones. Every pair is taken alike (a switched cluster: per-hop cost 0).
-//  - CPU: every rank times counted kernels of the real renderer (vertex transforms alone,
-//    triangle set-up alone, whole renders of the teapot and the bunny at several sizes), a
-//    clear, a frame-buffer merge and a memory copy, and fits one multiplier of the 80386 prior
-//    table per probe group (vertex, triangle, spans, pixels, clear, merge, packing; NNLS on
-//    relative errors, pulled weakly towards one overall ratio); rank 0 averages the ranks.
+//  - Network (mpi/probe_net.hpp): ping-pong between rank 0 and every other rank over the sizes
+//    the algorithms send (0 B..16 MiB), the tenth percentile of many round trips; a start-up and
+//    a per-byte cost per protocol range (SimGrid's smpi/or, piecewise), of which the platform
+//    takes two: a start-up up to the switch point that fits best, another above it, the long
+//    range's per-byte cost.
+//  - CPU (mpi/probe_cpu.hpp): every rank times zcube's own loops (projection, set-up, the
+//    scanline z-buffer, span lists, the active pixel z-buffer, a fresh frame buffer, both merges,
+//    packing, tessellation, the load estimate) on its CPU time and fits one multiplier of the
+//    80386 table per cost group to them (NNLS on relative errors); rank 0 averages the ranks.
 //  - Memory: the host's physical memory shared by the ranks on it.
 #include <string>
 #include <vector>

@@ -1,0 +1,149 @@
+#!/usr/bin/env python3
+"""Measured (MPI backend) against predicted (simulator on the probed platform), phase by phase.
+
+usage: mpi_compare.py OUT CORES
+Reads OUT/measured.csv (every run's phase times), OUT/predicted/<workload>-<P>.json (reports made
+before the measured runs), OUT/probe.txt and OUT/conditions.txt; writes OUT/comparison.csv and
+OUT/README.md. A point is measured as the median of its runs; the spread is (max - min) / median.
+"""
+import csv
+import json
+import os
+import statistics
+import sys
+
+TOTAL_TOL, PHASE_TOL, PHASE_SHARE = 0.15, 0.25, 0.10
+
+
+def load_measured(path):
+    runs = {}  # (workload, P) -> {phase: [seconds per run]}, processes
+    procs = {}
+    order = {}
+    for r in csv.DictReader(open(path)):
+        key = (r["workload"], int(r["nodes"]))
+        procs[key] = int(r["processes"])
+        ph = runs.setdefault(key, {})
+        ph.setdefault(r["phase"], []).append(float(r["seconds"]))
+        order.setdefault(key, [])
+        if r["phase"] not in order[key]:
+            order[key].append(r["phase"])
+    return runs, procs, order
+
+
+def fmt(x):
+    return "%.4g" % x
+
+
+def pct(x):
+    return "%+.1f %%" % (100 * x)
+
+
+def main():
+    out, cores = sys.argv[1], int(sys.argv[2])
+    runs, procs, order = load_measured(os.path.join(out, "measured.csv"))
+    cond = dict(
+        line.strip().split("=", 1)
+        for line in open(os.path.join(out, "conditions.txt"))
+        if "=" in line
+    )
+    rows, totals, details = [], [], []
+    passed = failed = 0
+    for key in runs:
+        name, p = key
+        pred = json.load(open(os.path.join(out, "predicted", f"{name}-{p}.json")))
+        pp = {x["name"]: x["max_s"] for x in pred["phases"]}
+        pp["total"] = pred["virtual_time_s"]
+        over = procs[key] > cores
+        med = {ph: statistics.median(v) for ph, v in runs[key].items()}
+        spread = {
+            ph: (max(v) - min(v)) / statistics.median(v) if statistics.median(v) > 0 else 0
+            for ph, v in runs[key].items()
+        }
+        total = med["total"]
+        lines = []
+        ok = True
+        for ph in order[key] + [x for x in pp if x not in order[key]]:
+            m, s, pr = med.get(ph), spread.get(ph), pp.get(ph)
+            err = (pr - m) / m if m and pr is not None and m > 0 else None
+            share = m / total if m is not None and total > 0 else 0
+            tol = TOTAL_TOL if ph == "total" else PHASE_TOL
+            judged = ph == "total" or share > PHASE_SHARE
+            good = err is not None and abs(err) <= tol
+            if judged and not over:
+                ok = ok and good
+            rows.append([name, p, procs[key], ph, m, s, pr, err, share])
+            lines.append(
+                "| %s | %s | %s | %s | %s | %s |"
+                % (
+                    ph,
+                    fmt(m) if m is not None else "",
+                    pct(s) if s is not None else "",
+                    fmt(pr) if pr is not None else "",
+                    pct(err) if err is not None else "",
+                    ("**%.0f %%**" if judged else "%.0f %%") % (100 * share),
+                )
+            )
+        if not over:
+            passed += ok
+            failed += not ok
+        totals.append(
+            "| %s | %d | %d%s | %s | %s | %s | %s | %s |"
+            % (
+                name,
+                p,
+                procs[key],
+                " (oversubscribed)" if over else "",
+                fmt(total),
+                pct(spread["total"]),
+                fmt(pp["total"]),
+                pct((pp["total"] - total) / total),
+                "-" if over else ("yes" if ok else "no"),
+            )
+        )
+        details.append(
+            f"### {name}, P = {p} ({procs[key]} processes{', oversubscribed' if over else ''})\n\n"
+            "| phase | measured median (s) | spread | predicted (s) | error | share of the run |\n"
+            "|---|---|---|---|---|---|\n" + "\n".join(lines) + "\n"
+        )
+    with open(os.path.join(out, "comparison.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["workload", "nodes", "processes", "phase", "measured_median_s", "spread",
+                    "predicted_s", "rel_error", "share"])
+        for r in rows:
+            w.writerow([("" if v is None else (repr(v) if isinstance(v, float) else v)) for v in r])
+    probe = open(os.path.join(out, "probe.txt")).read().strip()
+    with open(os.path.join(out, "README.md"), "w") as f:
+        f.write(
+            f"""# The MPI backend on this machine against the simulator's prediction
+
+Written by `scripts/mpi_vs_model.sh` (one command, a few minutes) on {cond.get('host')}
+({cond.get('cores')} cores, {cond.get('date')}); phases timed on the **{cond.get('clock')}** clock
+(`ZCUBE_MPI_CLOCK`); load average (1, 5, 15 min) {cond.get('load_before')} before, {cond.get('load_after')}
+after. The method and what it shows: docs/machines.md, "Validation on a machine we can measure".
+
+1. `mpirun -np 2 zcube probe` timed zcube's own loops and a ping-pong and wrote `cluster-P.xml`
+   (`probe.json`: every loop, its counters, its time and the fit's prediction of it):
+
+```
+{probe}
+```
+
+2. Every workload was simulated on `cluster-P.xml` (`--fidelity analytic`) **before** any measured
+   run (`predicted/`); nothing measured below enters a prediction.
+3. Every point was run {cond.get('runs')} times on the MPI backend (`measured.csv`); a figure is the
+   median of its runs, the spread (max - min) / median. Blazek's node-initiated method runs its host
+   computer as one more process. **Points with more processes than cores are oversubscribed**:
+   ranks share cores, so they are pessimistic and noisy; the prediction assumes a core each.
+4. Targets: the total within {TOTAL_TOL:.0%}, every phase above {PHASE_SHARE:.0%} of the run (bold
+   share) within {PHASE_TOL:.0%}, at every point that is not oversubscribed: **{passed} met,
+   {failed} not**.
+
+| workload | P | processes | measured median (s) | spread | predicted (s) | error | targets met |
+|---|---|---|---|---|---|---|---|
+"""
+        )
+        f.write("\n".join(totals) + "\n\n## Phase by phase\n\n" + "\n".join(details))
+
+
+if __name__ == "__main__":
+    main()

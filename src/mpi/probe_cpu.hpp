@@ -1,0 +1,25 @@
+#pragma once
+// The probe's CPU measurement (mpi/probe.hpp): every counted cost timed on zcube's own loops, the
+// code the algorithms call (projection, set-up, the scanline z-buffer, span lists and the active
+// pixel z-buffer, a fresh frame buffer, both merges, packing into messages, tessellation, the load
+// estimate), on probe scenes none of the validation workloads uses.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "machine/machine.hpp"
+
+namespace zc {
+
+// Seconds per counted operation on this rank's CPU. `log` receives every timed loop (its counters,
+// seconds and the fitted prediction).
+CostTable measure_cpu(const std::string& root, double min_seconds, nlohmann::json& log);
+
+// Maps and touches `bytes` of heap before anything is timed and keeps them (every allocation from
+// the heap, none given back): the probe's loops and the MPI runs then find their buffers in memory
+// that is already there, as a 1990 node's physical memory was, instead of paying the host's demand
+// paging (a page fault and a zeroed page at a buffer's first touch) in whichever loop touches a
+// fresh buffer first. The probe and the MPI runs both call it.
+void premap_heap(std::size_t bytes);
+
+} // namespace zc

@@ -1,0 +1,137 @@
+#include "mpi/probe_net.hpp"
+
+#include <mpi.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "comm/comm.hpp"
+
+namespace zc {
+
+namespace {
+
+// One-way times (half the round trip) between rank 0 and `peer` for `bytes`, `reps` of them.
+std::vector<double> pingpong(int rank, int peer, std::size_t bytes, int reps) {
+  Bytes buf(std::max<std::size_t>(bytes, 1));
+  std::vector<double> t;
+  for (int i = 0; i < reps; ++i) {
+    if (rank == 0) {
+      const double t0 = MPI_Wtime();
+      MPI_Send(buf.data(), int(bytes), MPI_BYTE, peer, 7, MPI_COMM_WORLD);
+      MPI_Recv(buf.data(), int(bytes), MPI_BYTE, peer, 7, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      t.push_back((MPI_Wtime() - t0) / 2);
+    } else if (rank == peer) {
+      MPI_Recv(buf.data(), int(bytes), MPI_BYTE, 0, 7, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      MPI_Send(buf.data(), int(bytes), MPI_BYTE, 0, 7, MPI_COMM_WORLD);
+    }
+  }
+  return t;
+}
+
+// The tenth percentile: what the transport takes, without the scheduler's interruptions of a
+// shared machine (a ping-pong rank that loses its core waits a time slice).
+double low_percentile(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 10];
+}
+
+struct Sample {
+  double bytes, t;
+};
+
+// Start-up a and per-byte b minimising the relative errors sum((a + b m - t) / t)^2.
+void fit_line(const std::vector<Sample>& s, double& a, double& b) {
+  double s00 = 0, s01 = 0, s11 = 0, r0 = 0, r1 = 0;
+  for (const auto& x : s) {
+    const double w = 1.0 / (x.t * x.t);
+    s00 += w;
+    s01 += w * x.bytes;
+    s11 += w * x.bytes * x.bytes;
+    r0 += w * x.t;
+    r1 += w * x.t * x.bytes;
+  }
+  const double det = s00 * s11 - s01 * s01;
+  b = det > 0 ? (s00 * r1 - s01 * r0) / det : 0.0;
+  a = s00 > 0 ? (r0 - b * s01) / s00 : 0.0;
+}
+
+double rel_sq_error(const std::vector<Sample>& s, double a, double b) {
+  double e = 0;
+  for (const auto& x : s)
+    e += std::pow((a + b * x.bytes - x.t) / x.t, 2);
+  return e;
+}
+
+// The two-protocol model: the switch point that fits best (relative squared error), the long
+// range a line, the short range a constant start-up at the long range's per-byte cost.
+void fit_protocols(const std::vector<Sample>& all, NetFit& f) {
+  double best = 1e300;
+  for (const auto& cut : all) {
+    if (cut.bytes < 64) continue; // a short range of one size is no range
+    std::vector<Sample> lo, hi;
+    for (const auto& x : all)
+      (x.bytes <= cut.bytes ? lo : hi).push_back(x);
+    if (hi.size() < 3) continue;
+    double a = 0, b = 0;
+    fit_line(hi, a, b);
+    if (!(b > 0) || a < 0) continue;
+    double s = 0;
+    for (const auto& x : lo)
+      s += (x.t - b * x.bytes) / double(lo.size());
+    const double e = rel_sq_error(hi, a, b) + rel_sq_error(lo, s, b);
+    if (e < best) {
+      best = e;
+      f.short_s = std::max(s, 0.0);
+      f.long_s = a;
+      f.per_byte_s = b;
+      f.short_max_bytes = cut.bytes;
+    }
+  }
+}
+
+// The piecewise fit SimGrid's smpi/or takes: a line per range of sizes, for the record.
+nlohmann::json piecewise(const std::vector<Sample>& all, const std::vector<double>& cuts) {
+  nlohmann::json out = nlohmann::json::array();
+  for (std::size_t r = 0; r + 1 < cuts.size(); ++r) {
+    std::vector<Sample> s;
+    for (const auto& x : all)
+      if (x.bytes >= cuts[r] && x.bytes < cuts[r + 1]) s.push_back(x);
+    if (s.size() < 2) continue;
+    double a = 0, b = 0;
+    fit_line(s, a, b);
+    out.push_back({{"from_bytes", cuts[r]},
+                   {"to_bytes", cuts[r + 1]},
+                   {"startup_s", a},
+                   {"per_byte_s", b},
+                   {"rms_rel_error", std::sqrt(rel_sq_error(s, a, b) / double(s.size()))}});
+  }
+  return out;
+}
+
+} // namespace
+
+NetFit measure_network(int rank, int size) {
+  // From a scanline count to a frame-buffer band: what the algorithms send (up to 16 MiB).
+  const std::size_t sizes[] = {0,    8,     64,    256,    1024,     2048,     4096,
+                               8192, 16384, 65536, 262144, 1u << 20, 4u << 20, 16u << 20};
+  NetFit f;
+  std::vector<Sample> all;
+  for (int peer = 1; peer < size; ++peer)
+    for (std::size_t m : sizes) {
+      const int reps = m <= 16384 ? 101 : m <= (1u << 20) ? 31 : 11;
+      pingpong(rank, peer, m, 3); // warm-up: connections, pages
+      const double t = low_percentile(pingpong(rank, peer, m, reps));
+      if (rank != 0) continue;
+      f.samples.push_back({{"peer", peer}, {"bytes", m}, {"one_way_s", t}});
+      all.push_back({double(m), t});
+    }
+  if (rank != 0) return f;
+  fit_protocols(all, f);
+  // OpenMPI's shared-memory transport switches from eager to rendezvous at its eager limit (4 KiB)
+  // and sends large messages in fragments (32 KiB): the ranges SimGrid's smpi/or would take.
+  f.ranges = piecewise(all, {0, 4097, 65536, 1e18});
+  return f;
+}
+
+} // namespace zc
