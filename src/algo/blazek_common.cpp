@@ -181,10 +181,11 @@ void render_host_messages_then_merge(NodeContext& ctx, bool tessellates, bool ac
                                      const std::function<Mesh(const Bytes&)>& mesh_of_message) {
   check_scene(ctx.scene());
   const NodeRenderer nr(ctx.scene());
-  Framebuffer fb = nr.make_framebuffer(RowSet::all(nr.height()));
-  ctx.alloc(double(fb.bytes()), "frame buffer");
+  Framebuffer fb;
   {
-    auto ph = ctx.phase("render");
+    auto ph = ctx.phase("render"); // the clear of the new frame buffer is the phase's
+    fb = nr.make_framebuffer(RowSet::all(nr.height()));
+    ctx.alloc(double(fb.bytes()), "frame buffer");
     Counters k;
     k.pixels_cleared = fb.pixel_count();
     ctx.charge(k);

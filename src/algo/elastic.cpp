@@ -115,9 +115,9 @@ template <class Vertices>
 Framebuffer zbuffer_slice(NodeContext& ctx, const NodeRenderer& nr, const LocalScene& local,
                           const std::vector<typename Vertices::Record>& slice, const Vertices& pv,
                           const RowSet& rows) {
+  auto ph = ctx.phase("zbuffer"); // the clear of the new buffer is the phase's (pixels_cleared)
   Framebuffer fb = nr.make_framebuffer(rows);
   ctx.alloc(double(fb.bytes()), "slice z-buffer");
-  auto ph = ctx.phase("zbuffer");
   const bool textured = ctx.scene().textured();
   Counters w;
   w.pixels_cleared = fb.pixel_count();

@@ -12,7 +12,7 @@ public:
   void local_zbuffer(NodeContext& ctx, const NodeRenderer& nr, const NodeSpans& spans,
                      Counters& w) override;
   MergeMeasures merge(NodeContext& ctx, Counters& w) override;
-  ActivePixels final_pixels() override { return std::move(mine_); }
+  ActivePixels final_pixels(Counters&) override { return std::move(mine_); }
 
 protected:
   // The scheme's exchange: from wpa_ (the local foremost pixels) to mine_ (the final pixels of the

@@ -37,8 +37,9 @@ public:
                              Counters& w) = 0;
   // Pixel merging (§3); work counted into w, charged by the caller when the phase ends.
   virtual MergeMeasures merge(NodeContext& ctx, Counters& w) = 0;
-  // The final pixels the node holds after merging (taken once, for the output).
-  virtual ActivePixels final_pixels() = 0;
+  // The final pixels the node holds after merging (taken once, for the output); the work of
+  // making them records is counted into w.
+  virtual ActivePixels final_pixels(Counters& w) = 0;
 };
 
 std::unique_ptr<MergeScheme> make_zbuf_exc();

@@ -71,15 +71,24 @@ void output(NodeContext& ctx, const NodeRenderer& nr, MergeScheme& scheme,
             const MergeMeasures& measures, std::uint64_t tpg) {
   auto ph = ctx.phase("output");
   Comm& c = ctx.comm();
-  Bytes part = serialize_sparse(scheme.final_pixels());
-  ctx.charge_packing(part.size());
+  Counters packed;
+  Bytes part = serialize_sparse(scheme.final_pixels(packed));
+  packed.bytes_packed += part.size();
+  ctx.charge(packed);
   auto parts = coll::gatherv(c, 0, std::move(part));
   auto step_max = coll::allreduce(c, measures.step_bytes, coll::Op::Max);
   auto loads = coll::gatherv(c, 0, pack(std::vector<std::uint64_t>{measures.merge_load, tpg}));
   if (c.rank() != 0) return;
+  // Node 0 clears the picture and copies every part out of its message into it (the pixel records
+  // unpacked, then written to their locations: two passes over the bytes).
   Framebuffer img = nr.make_framebuffer(RowSet::all(nr.height()));
-  for (const auto& b : parts)
+  Counters w;
+  w.pixels_cleared = img.pixel_count();
+  for (const auto& b : parts) {
     scatter_active(deserialize_sparse(b.data(), b.size(), nr.width(), 0, nr.height()), img);
+    w.bytes_packed += 2 * b.size();
+  }
+  ctx.charge(w);
   record_measures(ctx, scheme, img, measures.step_bytes.size(), step_max, loads);
   ctx.deliver_image(0, std::move(img));
 }

@@ -56,13 +56,22 @@ public:
     return m;
   }
 
-  // The covered locations of the node's final band.
-  ActivePixels final_pixels() override {
+  // The covered locations of the node's final band, packed into pixel records: every location of
+  // the band is read (charged as the bytes it scans, kLocationBytes each) and each covered one
+  // becomes a record.
+  ActivePixels final_pixels(Counters& w) override {
     ActivePixels a;
     a.width = full_.width();
     a.y0 = y0_;
     a.y1 = y1_;
     a.row_begin.assign(std::size_t(y1_ - y0_) + 1, 0);
+    const std::size_t W = std::size_t(full_.width());
+    std::size_t covered = 0;
+    for (std::size_t i = std::size_t(y0_) * W; i < std::size_t(y1_) * W; ++i)
+      covered += full_.ids()[i] != kNoTriangle;
+    a.pixels.reserve(covered);
+    w.bytes_packed +=
+        Framebuffer::kLocationBytes * W * std::size_t(y1_ - y0_) + sizeof(WinningPixel) * covered;
     for (int y = y0_; y < y1_; ++y) {
       for (int x = 0; x < a.width; ++x) {
         const std::size_t i = full_.index(x, y);
