@@ -5,6 +5,7 @@
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
 #include "machine/platform_xml.hpp"
+#include "machine/units.hpp"
 #include "run/run_flags.hpp"
 #include "sim/simulation.hpp"
 #include "util/output_file.hpp"
@@ -22,10 +23,21 @@ MachineSpec edited(MachineSpec spec, const Overrides& o, const std::string& comm
   if (o.host_bandwidth_Bps) spec.net.host_per_byte_s = 1.0 / *o.host_bandwidth_Bps;
   if (o.memory_bytes) spec.memory_bytes = *o.memory_bytes;
   const double lowest = spec.net.per_hop_s + kSmpiEnvelopeBytes * spec.net.per_byte_s;
-  if (std::min(spec.net.startup_short_s, spec.net.startup_long_s) < lowest)
-    throw UsageError("--latency must be at least the per-hop cost plus 16 bytes at the channel "
-                     "rate (" +
-                     std::to_string(lowest * 1e6) + " us): SMPI's receive overhead would be < 0");
+  const double startup = std::min(spec.net.startup_short_s, spec.net.startup_long_s);
+  if (startup < lowest) {
+    // Name the flag that moved the figure past the other: the start-up given, else the channel's.
+    const std::string need = format_double(lowest * 1e6) + " us";
+    if (o.latency_s)
+      throw UsageError("--latency must be at least the per-hop cost plus 16 bytes at the channel "
+                       "rate (" +
+                       need + "): SMPI's receive overhead would be < 0");
+    throw UsageError(std::string(o.bandwidth_Bps ? "--bandwidth" : "--per-hop") +
+                     ": the per-hop cost plus 16 bytes at the channel rate (" + need +
+                     ") exceed the start-up (" + format_double(startup * 1e6) +
+                     " us), so SMPI's receive overhead would be < 0; give a --latency of at "
+                     "least " +
+                     need);
+  }
   spec.generated_by = "`" + command + "`";
   return spec;
 }

@@ -1,7 +1,10 @@
 #include "cli/sim_options.hpp"
 
+#include <cstdlib>
 #include <iomanip>
 #include <sstream>
+
+#include <simgrid/s4u/Engine.hpp>
 
 #include "run/run_flags.hpp"
 #include "sim/simgrid_args.hpp"
@@ -32,11 +35,42 @@ void SimFlags::add_to(CLI::App& app) {
   app.add_option("--cost-scale", cost_scale, "multiply every cost, CPU and network");
   app.add_option("--cfg", cfg,
                  "a SimGrid setting name:value, passed to SimGrid after zcube's own (e.g. "
-                 "network/model:LV08); repeatable");
+                 "network/model:LV08 with --fidelity flow; --help-cfg lists them); repeatable");
   app.add_option("--log", log,
                  "a SimGrid log setting (e.g. root.thres:info; zcube sets root.thres:critical); "
                  "repeatable");
+  app.add_flag_callback("--help-cfg", print_simgrid_settings,
+                        "list SimGrid's settings (--cfg names, values, defaults) and exit");
 }
+
+void print_simgrid_settings() {
+  // SimGrid prints its settings and ends the process itself on --cfg-help.
+  std::vector<std::string> args = {"zcube", "--cfg-help"};
+  std::vector<char*> argv;
+  for (auto& a : args)
+    argv.push_back(a.data());
+  int argc = int(argv.size());
+  simgrid::s4u::Engine e(&argc, argv.data());
+  std::exit(0);
+}
+
+namespace {
+
+// A --cfg the fidelity never reads is refused rather than printed and ignored: only the flow
+// fidelity lets SimGrid's network model time messages (the others charge them in zcube,
+// platforms/README.md), and zcube runs no SMPI program.
+void check_cfg_is_read(const std::string& name, const std::string& value,
+                       const std::string& fidelity) {
+  if (name.rfind("smpi/", 0) == 0)
+    throw UsageError("--cfg " + name + ":" + value +
+                     ": zcube runs no SMPI program, so SMPI's settings change nothing");
+  if (name.rfind("network/", 0) == 0 && fidelity != "flow")
+    throw UsageError("--cfg " + name + ":" + value + ": the " + fidelity +
+                     " fidelity times messages itself; SimGrid's network settings take effect "
+                     "under --fidelity flow only");
+}
+
+} // namespace
 
 std::vector<std::string> SimFlags::simgrid_args() const {
   std::vector<std::string> a;
@@ -44,6 +78,7 @@ std::vector<std::string> SimFlags::simgrid_args() const {
     const auto colon = c.find(':');
     if (colon == std::string::npos || colon == 0 || colon + 1 == c.size())
       throw UsageError("--cfg '" + c + "': expected name:value (e.g. network/model:LV08)");
+    check_cfg_is_read(c.substr(0, colon), c.substr(colon + 1), fidelity);
     a.push_back("--cfg=" + c);
   }
   for (const auto& l : log) {

@@ -32,6 +32,9 @@ struct SimFlags {
 } // namespace zc::cli
 
 namespace zc::cli {
+// --help-cfg: SimGrid's own list of its settings, then the process ends (exit status 0).
+[[noreturn]] void print_simgrid_settings();
+
 // One line per what-if override and SimGrid setting in force (empty when there is none), so a
 // run never uses a changed figure without saying so.
 std::string describe_overrides(const SimConfig& cfg);

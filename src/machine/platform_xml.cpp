@@ -50,6 +50,12 @@ std::string startup_sections(const NetworkParams& n) {
          overhead(n.startup_long_s) + ":0";
 }
 
+// The start-up of every node as SMPI reads it from a host: its receive overhead smpi/or.
+std::string startup_prop(const NetworkParams& n) {
+  return std::string("<prop id=\"") + kStartupProperty + "\" value=\"" + startup_sections(n) +
+         "\"/>";
+}
+
 // `v` in the largest of SimGrid's unit prefixes, in the fewest digits (at most 12; else plain) that
 // SimGrid (which multiplies the number by the prefix) reads back as `exact` would: "16Mf",
 // "2.8MBps", "10us".
@@ -92,9 +98,13 @@ std::string seconds(double s) {
 // per neighbour, the rest found by Dijkstra (shortest paths: the topology's hop counts).
 void duplex_nodes_zone(std::ostringstream& x, const std::string& id, const NetworkParams& n,
                        const std::string& speed, int nodes, Topology topo) {
-  x << "    <zone id=\"" << id << "\" routing=\"DijkstraCache\">\n";
+  // One node has no channel to route over: a Full zone (SimGrid's Dijkstra crashes on a graph
+  // without an edge when a route leaves the zone).
+  x << "    <zone id=\"" << id << "\" routing=\"" << (nodes == 1 ? "Full" : "DijkstraCache")
+    << "\">\n";
   for (int r = 0; r < nodes; ++r)
-    x << "      <host id=\"" << node_host_name(r) << "\" speed=\"" << speed << "\"/>\n";
+    x << "      <host id=\"" << node_host_name(r) << "\" speed=\"" << speed << "\">"
+      << startup_prop(n) << "</host>\n";
   std::set<std::pair<int, int>> pairs;
   for (int a = 0; a < nodes; ++a)
     for (int k = 0; k < channel_count(topo, nodes); ++k)
@@ -125,13 +135,19 @@ void duplex_nodes_zone(std::ostringstream& x, const std::string& id, const Netwo
 constexpr const char* kReadsCluster =
     "     SimGrid reads: channel bandwidth and latency (cluster bw, lat; lat is the per-hop\n"
     "     cost), the CPU clock (speed), the host link, and the start-up as SMPI's receive\n"
-    "     overhead smpi/or (start-up = smpi/or + lat + 16 envelope bytes / bw; a section per\n"
-    "     protocol).\n";
+    "     overhead smpi/or, a property of every node (start-up = smpi/or + lat + 16 envelope\n"
+    "     bytes / bw; a section per protocol).\n";
 constexpr const char* kReadsDuplexLinks =
     "     SimGrid reads: channel bandwidth and latency (links ch-a-b, one a direction; lat is\n"
     "     the per-hop cost) and the shared link duplex-a-b under both directions, the CPU\n"
-    "     clock (speed), the host link, and the start-up as SMPI's receive overhead smpi/or\n"
-    "     (start-up = smpi/or + lat + 16 envelope bytes / bw; a section per protocol).\n";
+    "     clock (speed), the host link, and the start-up as SMPI's receive overhead smpi/or,\n"
+    "     a property of every node (start-up = smpi/or + lat + 16 envelope bytes / bw; a\n"
+    "     section per protocol).\n";
+constexpr const char* kReadsConfig =
+    "     <config>: the settings under which SimGrid times a message as zcube does, for any\n"
+    "     SimGrid program (s4u or smpirun): CM02 flows without cross-traffic and SMPI's latency\n"
+    "     and bandwidth factors 1 (smpirun imposes its own network model, SMPI: CM02 with\n"
+    "     those factors), every message eager.\n";
 
 std::string duplex_link_name(int a, int b) {
   return kDuplexLinkPrefix + std::to_string(std::min(a, b)) + "-" + std::to_string(std::max(a, b));
@@ -158,13 +174,13 @@ std::string platform_xml(const MachineSpec& spec, int nodes, Topology topo,
                   " --topology " + topology_name(topo) + "`"
             : spec.generated_by)
     << "; edit it as any SimGrid platform.\n"
-    << (n.half_duplex_limited() ? kReadsDuplexLinks : kReadsCluster)
+    << (n.half_duplex_limited() ? kReadsDuplexLinks : kReadsCluster) << kReadsConfig
     << "     zcube.* properties and their meaning: platforms/README.md. -->\n"
     << "<platform version=\"4.1\">\n"
-    << "  <config>\n"
-    << "    <prop id=\"" << kStartupConfig << "\" value=\"" << startup_sections(n) << "\"/>\n"
-    << "    <prop id=\"" << kEagerConfig << "\" value=\"1073741824\"/>\n"
-    << "  </config>\n"
+    << "  <config>\n";
+  for (const auto& [key, value] : kFlowConfig)
+    x << "    <prop id=\"" << key << "\" value=\"" << value << "\"/>\n";
+  x << "  </config>\n"
     << "  <zone id=\"" << zone << "\" routing=\"Full\">\n";
   prop("zcube.machine", spec.name);
   prop("zcube.topology", topology_name(topo));
@@ -182,7 +198,8 @@ std::string platform_xml(const MachineSpec& spec, int nodes, Topology topo,
     x << "    <cluster id=\"" << zone << "-nodes\" topology=\"TORUS\" topo_parameters=\""
       << torus_dimensions(topo, nodes) << "\" prefix=\"node\" radical=\"0-" << nodes - 1
       << "\" suffix=\"\" speed=\"" << speed << "\" bw=\"" << rate(n.per_byte_s) << "\" lat=\""
-      << seconds(n.per_hop_s) << "\" sharing_policy=\"SPLITDUPLEX\"/>\n";
+      << seconds(n.per_hop_s) << "\" sharing_policy=\"SPLITDUPLEX\">\n      " << startup_prop(n)
+      << "\n    </cluster>\n";
   x << "    <zone id=\"" << zone << "-host\" routing=\"None\">\n"
     << "      <host id=\"" << kHostComputerName << "\" speed=\"" << speed << "\"/>\n"
     << "    </zone>\n";

@@ -4,13 +4,16 @@
 // 2x2x...x2, whose dimension-order routing is e-cube; a ring is the 1-D torus P), the host computer
 // srm is a zone of its own linked to node0 by host-up/host-down. SimGrid reads every figure it
 // can use: channel bandwidth and latency (the cluster's bw and lat), the CPU clock (host speed),
-// the message start-up as SMPI's receive overhead (<config> smpi/or, piecewise by size: the two
-// protocols) and the host link's bandwidth and latency. Links whose two directions carry less than
-// twice the one-way rate in all (the Volvox's T800s) are written out instead of a cluster: a link
-// per direction and a shared duplex-a-b link of the two-way total under both (docs/machines.md).
-// What SimGrid has no notion of is a zcube.*
-// property of the machine zone, stated once: switching, node memory, cycles per counted operation.
+// the message start-up as SMPI's receive overhead (smpi/or, a property of every node, piecewise by
+// size: the two protocols) and the host link's bandwidth and latency. The <config> block holds
+// only settings every SimGrid program declares (an s4u program loads the file as is), those under
+// which SimGrid's flow model times a lone message as zcube does (kFlowConfig). Links whose two
+// directions carry less than twice the one-way rate in all (the Volvox's T800s) are written out
+// instead of a cluster: a link per direction and a shared duplex-a-b link of the two-way total
+// under both (docs/machines.md). What SimGrid has no notion of is a zcube.* property of the machine
+// zone, stated once: switching, node memory, cycles per counted operation.
 #include <string>
+#include <utility>
 
 #include "machine/machine.hpp"
 
@@ -44,8 +47,19 @@ constexpr const char* kHostDownLink = "host-down";
 // shared link of the two-way total under the two directions of the channel between nodes a and b.
 constexpr const char* kDuplexLinkPrefix = "duplex-";
 std::string duplex_link_name(int a, int b);
+// SMPI's receive overhead, read from a host's property of that name before the global setting.
+constexpr const char* kStartupProperty = "smpi/or";
+// Also the name of the global setting, which files written before the property carry in <config>.
 constexpr const char* kStartupConfig = "smpi/or";
-// SMPI charges smpi/or only on eager (detached) sends, below this size: every message, here.
-constexpr const char* kEagerConfig = "smpi/send-is-detached-thresh";
+// The <config> of every file: CM02 flows (no latency and bandwidth factors of LV08), no
+// cross-traffic (an acknowledgement does not load the reverse channel), SMPI's factors 1 (smpirun
+// imposes network/model:SMPI, CM02 with those), and every message eager (SMPI charges smpi/or only
+// on detached sends, below this size).
+inline constexpr std::pair<const char*, const char*> kFlowConfig[] = {
+    {"network/model", "CM02"},
+    {"network/crosstraffic", "0"},
+    {"smpi/bw-factor", "0:1"},
+    {"smpi/lat-factor", "0:1"},
+    {"smpi/send-is-detached-thresh", "1073741824"}};
 
 } // namespace zc

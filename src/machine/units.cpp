@@ -1,39 +1,64 @@
 #include "machine/units.hpp"
 
-#include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cmath>
-#include <map>
+#include <cstdlib>
+#include <tuple>
 
 #include "util/error.hpp"
 
 namespace zc {
 namespace {
 
-std::string unit_list(const std::map<std::string, double>& units) {
+// SimGrid's unit_scale: each generator is <unit, value, base (2 or 10), abbreviated prefixes>; the
+// first entry of a name wins (std::map::emplace keeps it, as SimGrid's unordered_map does).
+UnitTable scale(std::initializer_list<std::tuple<const char*, double, int, bool>> generators) {
+  static const std::vector<std::string> bin_abbr = {"Ki", "Mi", "Gi", "Ti", "Pi", "Ei", "Zi", "Yi"},
+                                        bin = {"kibi", "mebi", "gibi", "tebi",
+                                               "pebi", "exbi", "zebi", "yobi"},
+                                        dec_abbr = {"k", "M", "G", "T", "P", "E", "Z", "Y"},
+                                        dec = {"kilo", "mega", "giga", "tera",
+                                               "peta", "exa",  "zeta", "yotta"};
+  UnitTable t;
+  for (auto [unit, value, base, abbrev] : generators) {
+    const double mult = base == 2 ? 1024.0 : 1000.0;
+    const auto& prefixes = base == 2 ? (abbrev ? bin_abbr : bin) : (abbrev ? dec_abbr : dec);
+    t.emplace(unit, value);
+    for (const auto& prefix : prefixes)
+      t.emplace(prefix + unit, value *= mult);
+  }
+  return t;
+}
+
+std::string unit_list(const UnitTable& units) {
+  // The short, common ones: the whole table has up to 66 entries.
   std::string known;
   for (const auto& [u, f] : units)
-    if (!u.empty()) known += (known.empty() ? "" : ", ") + u;
+    if (!u.empty() && u.size() <= 5 && u.find_first_of("PEZY") == std::string::npos)
+      known += (known.empty() ? "" : ", ") + u;
   return known;
 }
 
-double parse_with(const std::string& text, const std::string& flag,
-                  const std::map<std::string, double>& units, const char* what, Unit rule,
-                  const char* example) {
-  const char* b = text.data();
-  const char* e = b + text.size();
-  double v = 0;
-  auto [p, ec] = std::from_chars(b, e, v);
-  if (ec != std::errc() || !std::isfinite(v) || v < 0)
-    throw UsageError(flag + " '" + text + "': expected a non-negative " + what);
-  const std::string unit(p, e);
+// xbt_parse_get_value_with_unit: strtod, then the rest of the string is the unit.
+double parse_with(const std::string& text, const std::string& flag, const UnitTable& units,
+                  const char* what, Unit rule, const char* example) {
+  const char* b = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double v = std::strtod(b, &end);
+  if (end == b || errno == ERANGE || !std::isfinite(v) || v < 0)
+    throw UsageError(flag + " '" + text + "': expected a non-negative " + what + " (a finite " +
+                     "number and a unit, e.g. " + example + ")");
+  const std::string unit(end);
   if (unit.empty() && rule == Unit::Required)
     throw UsageError(flag + " '" + text + "': a " + what + " needs a unit, e.g. " + example +
                      " (units: " + unit_list(units) + ")");
+  if (unit.empty()) return v;
   auto it = units.find(unit);
   if (it == units.end())
-    throw UsageError(flag + " '" + text + "': unknown unit '" + unit + "' (use " +
-                     unit_list(units) + ")");
+    throw UsageError(flag + " '" + text + "': unknown unit '" + unit +
+                     "' (SimGrid's units: " + unit_list(units) + ")");
   if (!std::isfinite(v * it->second))
     throw UsageError(flag + " '" + text + "': beyond the largest " + what + " a double holds");
   return v * it->second;
@@ -41,28 +66,48 @@ double parse_with(const std::string& text, const std::string& flag,
 
 } // namespace
 
+const UnitTable& time_units() {
+  static const UnitTable t = {{"w", 7 * 24 * 60 * 60},
+                              {"d", 24 * 60 * 60},
+                              {"h", 60 * 60},
+                              {"m", 60},
+                              {"s", 1.0},
+                              {"ms", 1e-3},
+                              {"us", 1e-6},
+                              {"ns", 1e-9},
+                              {"ps", 1e-12}};
+  return t;
+}
+
+const UnitTable& bandwidth_units() {
+  static const UnitTable t = scale({{"bps", 0.125, 2, true},
+                                    {"bps", 0.125, 10, true},
+                                    {"Bps", 1, 2, true},
+                                    {"Bps", 1, 10, true}});
+  return t;
+}
+
+const UnitTable& size_units() {
+  static const UnitTable t =
+      scale({{"b", 0.125, 2, true}, {"b", 0.125, 10, true}, {"B", 1, 2, true}, {"B", 1, 10, true}});
+  return t;
+}
+
+const UnitTable& speed_units() {
+  static const UnitTable t = scale({{"f", 1, 10, true}, {"flops", 1, 10, false}});
+  return t;
+}
+
 double parse_time(const std::string& text, const std::string& flag, Unit rule) {
-  static const std::map<std::string, double> u = {{"", 1},      {"s", 1},     {"ms", 1e-3},
-                                                  {"us", 1e-6}, {"ns", 1e-9}, {"ps", 1e-12},
-                                                  {"m", 60},    {"h", 3600}};
-  return parse_with(text, flag, u, "time", rule, "275us");
+  return parse_with(text, flag, time_units(), "time", rule, "275us");
 }
 
 double parse_bandwidth(const std::string& text, const std::string& flag, Unit rule) {
-  static const std::map<std::string, double> u = {
-      {"", 1},           {"Bps", 1},           {"kBps", 1e3},
-      {"KBps", 1e3},     {"MBps", 1e6},        {"GBps", 1e9},
-      {"KiBps", 1024.0}, {"MiBps", 1048576.0}, {"GiBps", 1073741824.0},
-      {"bps", 0.125},    {"kbps", 125.0},      {"Kbps", 125.0},
-      {"Mbps", 125e3},   {"Gbps", 125e6}};
-  return parse_with(text, flag, u, "bandwidth", rule, "2.8MBps");
+  return parse_with(text, flag, bandwidth_units(), "bandwidth", rule, "2.8MBps");
 }
 
 double parse_bytes(const std::string& text, const std::string& flag, Unit rule) {
-  static const std::map<std::string, double> u = {
-      {"", 1},     {"B", 1},        {"kB", 1e3},        {"KB", 1e3},          {"MB", 1e6},
-      {"GB", 1e9}, {"KiB", 1024.0}, {"MiB", 1048576.0}, {"GiB", 1073741824.0}};
-  return parse_with(text, flag, u, "size", rule, "16MiB");
+  return parse_with(text, flag, size_units(), "size", rule, "16MiB");
 }
 
 std::vector<double> parse_bytes_list(const std::string& text, const std::string& flag) {
@@ -77,11 +122,7 @@ std::vector<double> parse_bytes_list(const std::string& text, const std::string&
 }
 
 double parse_speed(const std::string& text, const std::string& flag, Unit rule) {
-  // SimGrid host speeds: "f" is one flop per second (platform DTD: 1Gf, 10Mf, 3.5kf).
-  static const std::map<std::string, double> u = {
-      {"", 1},      {"f", 1},     {"kf", 1e3},     {"Mf", 1e6},     {"Gf", 1e9},
-      {"Tf", 1e12}, {"flops", 1}, {"kflops", 1e3}, {"Mflops", 1e6}, {"Gflops", 1e9}};
-  return parse_with(text, flag, u, "speed", rule, "10Mf");
+  return parse_with(text, flag, speed_units(), "speed", rule, "10Mf");
 }
 
 std::string format_double(double v) {

@@ -5,11 +5,17 @@
 
 namespace zc {
 
-// Runs `python3 <root>/scripts/plot_results.py args...` with Debian's interpreter where there is
-// one (the python3-matplotlib scripts/setup.sh installs is its module; a python3 earlier on
-// PATH, e.g. pyenv's, may lack it). True when the script succeeded.
+// The interpreter: $ZCUBE_PYTHON when set, else Debian's /usr/bin/python3 where there is one (the
+// python3-matplotlib scripts/setup.sh installs is its module; a python3 earlier on PATH, e.g.
+// pyenv's, may lack it), else python3 on PATH.
+std::string python_interpreter();
+
+// Runs `python3 <root>/scripts/plot_results.py --units <SimGrid's unit tables> args...` (the script
+// reads quantities such as "275us" with zcube's tables, machine/units.hpp). True when the script
+// succeeded.
 bool run_plot_script(const std::string& root, const std::vector<std::string>& args);
-// The same for another script of the tree (`script` relative to root, e.g. scripts/plot_gantt.py).
+// The same for another script of the tree (`script` relative to root, e.g. scripts/plot_gantt.py):
+// started directly (no shell), its arguments passed as they are.
 bool run_python_script(const std::string& root, const std::string& script,
                        const std::vector<std::string>& args);
 

@@ -13,6 +13,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include <xbt/config.hpp>
 
@@ -25,6 +26,7 @@ namespace zc {
 
 namespace sg = simgrid::s4u;
 
+// Files written before the start-up became a host property set smpi/or in <config>.
 void declare_platform_flags() {
   static bool declared = false;
   if (declared) return;
@@ -187,9 +189,8 @@ double number(const std::string& text, const std::string& where, const std::stri
 
 // smpi/or "size:offset:factor;...": zcube reads one constant offset per protocol, the short one
 // from size 0 and the long one above the second section's size.
-void read_startup(const std::string& text, const std::string& where, NetworkParams& n,
-                  double& short_overhead, double& long_overhead) {
-  const std::string what = std::string("<config> ") + kStartupConfig;
+void read_startup(const std::string& text, const std::string& where, const std::string& what,
+                  NetworkParams& n, double& short_overhead, double& long_overhead) {
   std::vector<std::array<double, 3>> sections;
   std::size_t at = 0;
   while (at <= text.size()) {
@@ -287,6 +288,23 @@ void read_links(const sg::Engine& e, const std::string& where, NetworkParams& n)
     throw InputError(where, 0, std::string("link '") + kHostUpLink + "' is missing");
 }
 
+// SMPI's receive overhead as SMPI finds it: the host's smpi/or property, else the global setting
+// (files written before the property carry it in <config>). zcube models identical nodes.
+std::pair<std::string, std::string> startup_text(const sg::Engine& e, int nodes,
+                                                 const std::string& where) {
+  const char* first = e.host_by_name(node_host_name(0))->get_property(kStartupProperty);
+  for (int r = 1; r < nodes; ++r) {
+    const char* v = e.host_by_name(node_host_name(r))->get_property(kStartupProperty);
+    if ((v == nullptr) != (first == nullptr) || (v && std::string(v) != first))
+      throw InputError(where, 0,
+                       "host '" + node_host_name(r) + "' property " + kStartupProperty +
+                           " differs from node0's: zcube models identical nodes");
+  }
+  if (first) return {first, "host property " + std::string(kStartupProperty)};
+  return {simgrid::config::get_value<std::string>(kStartupConfig),
+          "<config> " + std::string(kStartupConfig)};
+}
+
 const char* zone_prop(const sg::NetZone* z, const std::string& key, const std::string& where) {
   const char* v = z->get_property(key);
   if (!v) throw InputError(where, 0, "zone property '" + key + "' is missing");
@@ -324,8 +342,8 @@ PlatformModel read_platform(const sg::Engine& e, const std::string& where) {
 
   read_links(e, where, m.net);
   double short_o = 0, long_o = 0;
-  read_startup(simgrid::config::get_value<std::string>(kStartupConfig), where, m.net, short_o,
-               long_o);
+  const auto [startup, startup_what] = startup_text(e, m.nodes, where);
+  read_startup(startup, where, startup_what, m.net, short_o, long_o);
   // start-up = receive overhead + the first hop's latency + SMPI's envelope at the channel rate.
   const double fixed = m.net.per_hop_s + kSmpiEnvelopeBytes * m.net.per_byte_s;
   m.net.startup_short_s = short_o + fixed;

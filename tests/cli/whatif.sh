@@ -52,10 +52,20 @@ expect overrides-printed $(( rc != 0 || $? != 0 )) "$(cat "$tmp/run.out")"
 grep -q "^zcube [0-9].*SimGrid 3\." "$tmp/v"
 expect version $? "$(cat "$tmp/v")"
 usage_error cfg-malformed "--cfg" "$zcube" run "${small[@]}" --cfg network/model
-"$zcube" run "${small[@]}" --cfg network/crosstraffic:0 --log root.thres:warning >"$tmp/cfg.out" 2>&1
+"$zcube" run "${small[@]}" --fidelity flow --cfg network/crosstraffic:0 --log root.thres:warning \
+  >"$tmp/cfg.out" 2>&1
 rc=$?
 grep -q "SimGrid: --cfg=network/crosstraffic:0" "$tmp/cfg.out"
 expect cfg-passed $(( rc != 0 || $? != 0 )) "$(cat "$tmp/cfg.out")"
+# A setting the run would ignore is refused, not printed and ignored: the network model under the
+# circuit fidelity (which times messages itself), SMPI's settings (no SMPI program runs).
+usage_error cfg-network-model-circuit "--cfg network/model:LV08: the circuit fidelity" \
+  "$zcube" run "${small[@]}" --cfg network/model:LV08
+usage_error cfg-smpi "--cfg smpi/or:0:1:0: zcube runs no SMPI program" \
+  "$zcube" pingpong --cfg smpi/or:0:1:0
+"$zcube" run --help-cfg >"$tmp/helpcfg.out" 2>&1
+grep -q "network/model" "$tmp/helpcfg.out"
+expect help-cfg $? "$(head -c 300 "$tmp/helpcfg.out")"
 
 # --- finding 4: an honest regress ---------------------------------------------------------------
 cat >"$tmp/runs.json" <<'EOF'
@@ -118,7 +128,8 @@ test -s "$tmp/sw2/sweep.svg"
 expect sweep-plot-format-svg $?
 # The legend in numeric order (27.5us, 275us, 2.75ms; not as text), the machine in the title, a
 # y label with its meaning: read from what the plot script drew.
-/usr/bin/python3 scripts/plot_results.py --describe "$tmp/d.json" --sweep "$tmp/sw2/sweep.csv" \
+/usr/bin/python3 scripts/plot_results.py --units "$("$zcube" units --json)" --describe "$tmp/d.json" \
+  --sweep "$tmp/sw2/sweep.csv" \
   nodes speedup "$tmp/sw2/again.png" &&
   /usr/bin/python3 - "$tmp/d.json" <<'EOF'
 import json, sys
