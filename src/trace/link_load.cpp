@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "machine/platform_xml.hpp"
 #include "machine/topology.hpp"
 
 namespace zc {
@@ -20,7 +21,10 @@ std::vector<Link> message_route(Topology t, int P, int src, int dst) {
 
 } // namespace
 
-std::string link_name(const Link& l) {
+std::string link_name(const Link& l, int P) {
+  // The host computer's link by its platform names (machine/platform_xml.hpp).
+  if (l.first == P) return std::string(kHostDownLink) + " (srm->node 0)";
+  if (l.second == P) return std::string(kHostUpLink) + " (node 0->srm)";
   return "link " + std::to_string(l.first) + "->" + std::to_string(l.second);
 }
 

@@ -15,6 +15,8 @@ using Link = std::pair<int, int>; // (from, to); the host computer is rank P
 // Per link the steps (time, messages in flight from then on), in time order.
 std::map<Link, std::vector<std::pair<double, int>>> link_load(const Timeline& tl,
                                                               const std::string& topology);
-std::string link_name(const Link& l);
+// "link 0->4", or the host computer's links (rank P) by their platform names: "host-up (node
+// 0->srm)".
+std::string link_name(const Link& l, int P);
 
 } // namespace zc

@@ -174,7 +174,7 @@ void write_paje_trace(const Timeline& tl, const std::string& topology, std::ostr
   for (const auto& [l, steps] : link_load(tl, topology)) {
     std::string c = "l";
     ((c += std::to_string(l.first)) += '_') += std::to_string(l.second);
-    add(0, -998, fields({"5", "0", c, "LINK", "m", quoted(link_name(l))}));
+    add(0, -998, fields({"5", "0", c, "LINK", "m", quoted(link_name(l, tl.nodes))}));
     add(0, -997, fields({"7", "0", "INFLIGHT", c, "0"}));
     for (const auto& [t, n] : steps)
       add(t, 250, fields({"7", num(t), "INFLIGHT", c, std::to_string(n)}));

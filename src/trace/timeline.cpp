@@ -9,8 +9,9 @@ namespace zc {
 
 namespace {
 
-// Idle gaps of [0, total] between the activities, cut where a phase begins or ends so that every
-// slice nests inside the phases (a trace viewer needs proper nesting).
+// Every instant of [0, total] as one activity: the idle gaps between the activities filled in, and
+// every slice (idle or not) cut where a phase begins or ends, so that each nests inside the phases
+// (a trace viewer needs proper nesting on a track: Perfetto drops a slice that crosses another).
 std::vector<Span> with_idle(const std::vector<Span>& acts, const std::vector<Span>& phases,
                             double total) {
   std::vector<double> cuts;
@@ -20,21 +21,24 @@ std::vector<Span> with_idle(const std::vector<Span>& acts, const std::vector<Spa
   }
   std::sort(cuts.begin(), cuts.end());
   std::vector<Span> out;
-  auto idle = [&](double a, double b) {
+  auto add = [&](const std::string& name, double a, double b) {
     auto it = std::upper_bound(cuts.begin(), cuts.end(), a);
     for (; it != cuts.end() && *it < b; ++it) {
-      out.push_back({"idle", 0, a, *it});
+      out.push_back({name, 0, a, *it});
       a = *it;
     }
-    if (b > a) out.push_back({"idle", 0, a, b});
+    if (b > a) out.push_back({name, 0, a, b});
   };
   double t = 0;
   for (const auto& a : acts) {
-    if (a.begin_s > t) idle(t, a.begin_s);
-    out.push_back(a);
+    if (a.begin_s > t) add("idle", t, a.begin_s);
+    if (a.end_s > a.begin_s)
+      add(a.name, a.begin_s, a.end_s);
+    else
+      out.push_back(a);
     t = std::max(t, a.end_s);
   }
-  if (total > t) idle(t, total);
+  if (total > t) add("idle", t, total);
   return out;
 }
 

@@ -19,7 +19,7 @@ struct NodeTimeline {
   int index;         // 0..P-1 the nodes, P the host computer
   std::string label; // "node 3", "host (srm)"
   std::vector<Span> phases;
-  std::vector<Span> activities; // chronological; idle gaps split at phase boundaries
+  std::vector<Span> activities; // chronological; every slice split at phase boundaries
 };
 
 struct Timeline {

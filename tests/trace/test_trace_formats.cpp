@@ -1,10 +1,14 @@
-// The trace files of `zcube run --trace` (issue 13): the Chrome/Perfetto JSON has one track per
-// node, one flow per message and slices that add up to the report's busy, communication and idle
-// times; the Paje file passes pj_dump. For every algorithm and every fidelity.
+// The trace files of `zcube run --trace`: the Chrome/Perfetto JSON has one track per node, one
+// flow per message, properly nested slices, and slices that add up to the report's busy,
+// communication and idle times; the Paje file passes pj_dump. For every algorithm and fidelity.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -72,13 +76,16 @@ TEST(ChromeTrace, OneTrackPerNodeOneFlowPerMessageSlicesSumToTheReport) {
     const Timeline tl = read_timeline(r, "report");
     const auto j = nlohmann::json::parse(chrome_trace(tl, r["topology"]).dump());
     std::map<int, std::map<std::string, double>> sums; // tid -> activity -> seconds
+    std::map<int, int> slices;                         // tid -> activity slices
     int tracks = 0, flows_out = 0, flows_in = 0;
     for (const auto& e : j["traceEvents"]) {
       if (e["ph"] == "M" && e["name"] == "thread_name") ++tracks;
       if (e["ph"] == "s") ++flows_out;
       if (e["ph"] == "f") ++flows_in;
-      if (e["ph"] == "X" && e["cat"] == "activity")
+      if (e["ph"] == "X" && e["cat"] == "activity") {
         sums[e["tid"].get<int>()][e["name"]] += e["dur"].get<double>() * 1e-6;
+        ++slices[e["tid"].get<int>()];
+      }
     }
     const auto& per_node = r["per_node"];
     EXPECT_EQ(tracks, int(per_node.size())) << name(r); // the P nodes and the host, if it ran
@@ -87,11 +94,58 @@ TEST(ChromeTrace, OneTrackPerNodeOneFlowPerMessageSlicesSumToTheReport) {
     for (std::size_t i = 0; i < per_node.size(); ++i) {
       auto& s = sums[int(i)];
       const auto& pn = per_node[i];
-      EXPECT_NEAR(s["compute"], pn["busy_s"].get<double>(), 1e-9) << name(r) << " node " << i;
-      EXPECT_NEAR(s["send"] + s["wait"], pn["comm_s"].get<double>(), 1e-9)
+      // Each slice's ends are rounded to the nanosecond.
+      const double tol = 1e-9 * (1 + slices[int(i)]);
+      EXPECT_NEAR(s["compute"], pn["busy_s"].get<double>(), tol) << name(r) << " node " << i;
+      EXPECT_NEAR(s["send"] + s["wait"], pn["comm_s"].get<double>(), tol)
           << name(r) << " node " << i;
-      EXPECT_NEAR(s["idle"], pn["idle_s"].get<double>(), 1e-9) << name(r) << " node " << i;
+      EXPECT_NEAR(s["idle"], pn["idle_s"].get<double>(), tol) << name(r) << " node " << i;
     }
+  }
+}
+
+// Perfetto reads ts and dur as microseconds rounded to nanoseconds and keeps, per track, only
+// slices that nest: each slice lies inside the one it starts in, or after it.
+TEST(ChromeTrace, SlicesNestProperlyOnEveryTrack) {
+  for (const auto& r : reports()) {
+    ASSERT_EQ(r["status"], "ok") << name(r);
+    const auto j = chrome_trace(read_timeline(r, "report"), r["topology"]);
+    std::map<int, std::vector<std::pair<std::int64_t, std::int64_t>>> tracks; // tid -> [begin, end)
+    for (const auto& e : j["traceEvents"])
+      if (e["ph"] == "X") {
+        const std::int64_t b = std::llround(e["ts"].get<double>() * 1000.0);
+        tracks[e["tid"].get<int>()].push_back(
+            {b, b + std::llround(e["dur"].get<double>() * 1000.0)});
+      }
+    for (auto& [tid, slices] : tracks) {
+      // Outer first: by start, the longer one first at a common start.
+      std::sort(slices.begin(), slices.end(), [](const auto& a, const auto& b) {
+        return a.first != b.first ? a.first < b.first : a.second > b.second;
+      });
+      std::vector<std::int64_t> open; // ends of the slices enclosing the current one
+      int crossing = 0;
+      for (const auto& [b, e] : slices) {
+        while (!open.empty() && open.back() <= b)
+          open.pop_back();
+        if (!open.empty() && e > open.back()) ++crossing;
+        open.push_back(e);
+      }
+      EXPECT_EQ(crossing, 0) << name(r) << " track " << tid << ": slices crossing another";
+    }
+  }
+}
+
+TEST(ChromeTrace, HostLinkCountersNamedAsThePlatformsLinks) {
+  for (const auto& r : reports()) {
+    if (r["algorithm"] != "host-initiated") continue;
+    const auto j = chrome_trace(read_timeline(r, "report"), r["topology"]);
+    std::set<std::string> names;
+    for (const auto& e : j["traceEvents"])
+      if (e["ph"] == "C") names.insert(e["name"]);
+    EXPECT_TRUE(names.count("host-down (srm->node 0)")) << name(r);
+    EXPECT_TRUE(names.count("host-up (node 0->srm)")) << name(r);
+    for (const auto& n : names)
+      EXPECT_EQ(n.find("->" + std::to_string(r["nodes"].get<int>())), std::string::npos) << n;
   }
 }
 
