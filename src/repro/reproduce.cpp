@@ -3,8 +3,10 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 
 #include "repro/calibrate.hpp"
@@ -21,16 +23,16 @@ namespace zc {
 
 namespace {
 
-std::string top_readme(const ReproduceOptions& o, double wall_s, std::size_t points,
+// The folder's README: deterministic text only (no host time), so that a second run of the same
+// command rewrites the same bytes.
+std::string top_readme(const ReproduceOptions& o, std::size_t points,
                        const std::string& fidelity_md, const std::string& kept) {
-  std::string papers;
-  for (const auto& p : o.papers)
-    papers += (papers.empty() ? "" : " ") + p;
   return "# zcube results: the papers reproduced on calibrated machine models\n\n"
-         "Written by `zcube reproduce " +
-         papers + (o.full ? " --full" : "") +
-         "` (src/repro/). Every number is a deterministic output of the simulator, "
-         "except the host wall times (`wall_s`, `host_cost.csv`).\n\n"
+         "Written by `zcube reproduce" +
+         std::string(o.full ? " --full" : "") +
+         "` (src/repro/). Every number here is a deterministic output of the simulator: "
+         "running the command again writes the same files. The host's wall time of each run "
+         "goes to `host_cost.csv` files, which are not committed (they vary from run to run).\n\n"
          "| folder | paper | what |\n|---|---|---|\n"
          "| [calibration/](calibration/README.md) | Kurc Table 2, Charles §6 | the fitted CPU "
          "cost tables and the residual of every target (`zcube calibrate`) |\n"
@@ -44,26 +46,25 @@ std::string top_readme(const ReproduceOptions& o, double wall_s, std::size_t poi
           : kept.empty()
               ? std::string("1..64 spheres; `zcube reproduce blazek --full` for 1..2048, about "
                             "8 minutes")
-              : std::string("the `--full` tables, kept; this run's 1..64 spheres are in "
-                            "[blazek-quick/](blazek-quick/README.md)")) +
+              : std::string("the `--full` tables, kept; a run without `--full` writes its 1..64 "
+                            "spheres to `blazek-quick/`, not committed")) +
          ") |\n"
          "| [mpi/](mpi/README.md) | (this machine) | the same algorithms on MPI processes, "
          "measured "
          "against the prediction on the platform `zcube probe` wrote (scripts/mpi_vs_model.sh) "
          "|\n\n"
          "This run: " +
-         std::to_string(points) + " simulations in " + fixed(wall_s, 1) + " s of host wall time (" +
-         std::to_string(o.jobs) + " at a time)." + (kept.empty() ? "" : " Kept: " + kept + ".") +
+         std::to_string(points) + " simulations." + (kept.empty() ? "" : " Kept: " + kept + ".") +
          "\n\n"
-         "## Error against run time (fidelity.csv, fidelity.png)\n\n"
+         "## Error of the network models (fidelity.csv, fidelity.png)\n\n"
          "The same runs under the three network models; the error is against `circuit` (the "
          "reference: each message holds its channels in dimension order, as the iPSC's "
          "Direct-Connect Module). `analytic` ignores contention, `flow` shares bandwidth "
          "(SimGrid's CM02). `virtual_s` is the paper's timed region where the algorithm marks one "
          "(Kurc's three Table 2 phases, elastic's per-picture loop; docs/papers.md), else the "
          "whole run. `paper_rel_error` is against the seeds' figure where one exists "
-         "(Kurc Table 2's pixel merging at 16 nodes). Wall times are the host's and vary from run "
-         "to run.\n\n" +
+         "(Kurc Table 2's pixel merging at 16 nodes). The host's wall time of each run is in "
+         "`host_cost.csv` (not committed).\n\n" +
          fidelity_md;
 }
 
@@ -98,6 +99,23 @@ std::string config_key(const SimConfig& c) {
   return j.dump();
 }
 
+// "gantt_pair-rs.png" in another plot format: "gantt_pair-rs.svg".
+std::string with_plot_format(const std::string& file, const std::string& format) {
+  return file.ends_with(".png") ? file.substr(0, file.size() - 3) + format : file;
+}
+
+// A README written by a plan names its plots as PNG files: the format drawn instead.
+void name_plots_in(const std::string& readme, const std::string& format) {
+  if (format == "png" || !std::filesystem::exists(readme)) return;
+  std::ifstream in(readme);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string s = text.str();
+  for (std::size_t at = 0; (at = s.find(".png", at)) != std::string::npos; at += format.size() + 1)
+    s.replace(at, 4, "." + format);
+  write_text(readme, s);
+}
+
 } // namespace
 
 std::string plan_directory(const ReproduceOptions& o, const PaperPlan& p, std::string* note) {
@@ -127,6 +145,10 @@ int reproduce(const ReproduceOptions& o) {
   }
   const bool all = o.papers.size() == 3;
   if (all) plans.push_back(fidelity_plan(o));
+  // The plans name their charts .png: drawn, and named in the READMEs, in the format asked.
+  for (auto& p : plans)
+    for (auto& g : p.gantt)
+      g.file = with_plot_format(g.file, o.plot_format);
   std::vector<std::string> dirs;
   std::string kept;
   for (const auto& p : plans) {
@@ -186,6 +208,7 @@ int reproduce(const ReproduceOptions& o) {
     const std::string& dir = dirs[std::size_t(&p - plans.data())];
     std::filesystem::create_directories(dir);
     summaries += p.write(r, dir);
+    if (!p.name.empty()) name_plots_in(dir + "/README.md", o.plot_format);
   }
   if (all && o.calibration) {
     CalibrationOptions c;
@@ -204,8 +227,10 @@ int reproduce(const ReproduceOptions& o) {
     }
     write_calibration_results(fit, o.out + "/calibration");
   }
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (all) write_text(o.out + "/README.md", top_readme(o, wall, cfgs.size(), summaries, kept));
+  if (all) {
+    write_text(o.out + "/README.md", top_readme(o, cfgs.size(), summaries, kept));
+    name_plots_in(o.out + "/README.md", o.plot_format);
+  }
 
   if (o.plots) {
     if (!charts.empty() && !draw_gantts(charts, o.root))
@@ -214,6 +239,8 @@ int reproduce(const ReproduceOptions& o) {
       std::cerr << "reproduce: plots not drawn (scripts/plot_results.py failed; it needs "
                    "python3-matplotlib, which scripts/setup.sh installs)\n";
   }
+  // The whole job's time, plots included.
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (o.verbose) std::cerr << "reproduce: wrote " << o.out << "/ in " << fixed(wall, 1) << " s\n";
   return status;
 }

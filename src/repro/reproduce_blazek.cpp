@@ -130,8 +130,9 @@ std::string write_blazek(const std::vector<int>& spheres, const Reports& reps,
           "Ranking at " +
           std::to_string(big) + " spheres on 32 nodes: " + order + ": " + verdict +
           ".\n\n## Speed-up and efficiency (speedup.csv)\n\n" + tables +
-          "`host_cost.csv`: the simulator's wall time and peak RSS per point (points ran in "
-          "parallel, so wall times are pessimistic).\n\nPlots: `speedup.png`, `efficiency.png`.\n" +
+          "`host_cost.csv` (not committed: it varies from run to run): the simulator's wall time "
+          "and peak RSS per point (points ran in parallel, so wall times are pessimistic).\n\n"
+          "Plots: `speedup.png`, `efficiency.png`.\n" +
           gantt_markdown(blazek_gantt()));
   return "";
 }
