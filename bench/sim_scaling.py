@@ -132,18 +132,23 @@ def plot(rows, out):
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, ax = plt.subplots(figsize=(7, 5))
-    for algo, _, _, _ in CASES:
+    # Each series' P labels on a side of their own (above, below, left), clear of the others'.
+    sides = [((0, 7), "center", "bottom"), ((0, -8), "center", "top"), ((-5, 4), "right", "bottom")]
+    for i, (algo, _, _, _) in enumerate(CASES):
         pts = [r for r in rows if r["algorithm"] == algo and r["messages"]]
-        ax.loglog([r["messages"] for r in pts], [r["wall_s"] for r in pts], "o-", label=algo)
+        line, = ax.loglog([r["messages"] for r in pts], [r["wall_s"] for r in pts], "o-", label=algo)
+        offset, ha, va = sides[i % len(sides)]
         for r in pts:
-            ax.annotate(f'P={r["nodes"]}', (r["messages"], r["wall_s"]), fontsize=6)
+            ax.annotate(f'{r["nodes"]}', (r["messages"], r["wall_s"]), xytext=offset,
+                        textcoords="offset points", ha=ha, va=va, fontsize=6.5,
+                        color=line.get_color())
     pts = [r for r in rows if r["messages"]]
     if pts:
         top = max(pts, key=lambda r: r["messages"])  # slope 1 through the largest run
         k = top["wall_s"] / top["messages"]
         xs = [min(r["messages"] for r in pts), top["messages"]]
         ax.loglog(xs, [k * x for x in xs], "k--", label="O(events): slope 1 through the largest run")
-    ax.set_xlabel("simulated messages")
+    ax.set_xlabel("simulated messages (each point labelled with its P)")
     ax.set_ylabel("host wall time of the simulation (s)")
     ax.set_title("zcube simulator scaling, P = 1..1024 (ipsc860 cube, circuit)")
     ax.legend(fontsize=8)

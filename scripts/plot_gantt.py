@@ -23,13 +23,20 @@ import numpy as np
 from matplotlib.collections import LineCollection, PolyCollection
 from matplotlib.patches import Patch
 
-META = {"Software": None}  # no version string: the same report gives the same PNG
+# No version string nor date: the same report gives the same file, in every format.
+META = {"png": {"Software": None}, "svg": {"Date": None}, "pdf": {"CreationDate": None}}
+plt.rcParams["svg.hashsalt"] = "zcube"  # SVG ids from the content, not a random salt
 MAX_EXACT_ROWS = 64
 MAX_MESSAGES = 1500
 TIME_BINS = 1200
 DPI = 110
 ACTIVITY_COLOURS = {"compute": "#2ca02c", "send": "#d62728", "wait": "#ff7f0e", "idle": "#ececec"}
 ACTIVITIES = list(ACTIVITY_COLOURS)
+# Phases in blues, purples, browns, pinks, teals and olives: none a grey (idle), green (compute),
+# red (send) or orange (wait) of the activities beneath them.
+PHASE_COLOURS = ["#4e79a7", "#b07aa1", "#9c755f", "#76b7b2", "#e377c2", "#bcbd22", "#a0cbe8",
+                 "#d4a6c8", "#c5a48a", "#17becf", "#393b79", "#637939", "#7b4173", "#dbdb8d",
+                 "#1f77b4", "#8c6d31"]
 
 
 def phase_colours(tracks):
@@ -38,8 +45,7 @@ def phase_colours(tracks):
         for p in t["phases"]:
             if p["name"] not in names:
                 names.append(p["name"])
-    cmap = plt.get_cmap("Set3" if len(names) <= 12 else "tab20")
-    return {n: cmap(i % cmap.N) for i, n in enumerate(names)}
+    return {n: PHASE_COLOURS[i % len(PHASE_COLOURS)] for i, n in enumerate(names)}
 
 
 def rectangles(spans, row, top, height):
@@ -207,7 +213,9 @@ def chart(report_path, out):
     ax.set_ylabel("node")
     scene = (r.get("scene", {}).get("path") or "").rsplit("/", 1)[-1].rsplit(".", 1)[0]
     nodes = r.get("nodes", nrows)
-    title = f"{r.get('machine', '?')}: {r.get('algorithm', '?')} on {scene}, P = {nodes} ({r.get('fidelity', '')})"
+    topology = {"cube": "hypercube", "ring": "ring"}.get(r.get("topology", ""), r.get("topology", "?"))
+    title = (f"{r.get('machine', '?')} {topology}: {r.get('algorithm', '?')} on {scene}, "
+             f"P = {nodes} ({r.get('fidelity', '')} fidelity)")
     ax.set_title(title, fontsize=10)
     note = f"{n_msgs} messages" + (f", 1 in {step} drawn" if step > 1 else "")
     note += "" if exact else f"; rows binned into {TIME_BINS} time steps"
@@ -215,13 +223,19 @@ def chart(report_path, out):
     plt.setp(ax.get_xticklabels(), visible=False)
     utilisation(strip, tracks, total)
     strip.set_xlabel("virtual time (s)" if not r.get("measured") else "measured time (s)")
-    handles = [Patch(color=c, label=n) for n, c in pcol.items()]
-    handles += [Patch(color=ACTIVITY_COLOURS[k], label=k) for k in ACTIVITIES]
-    handles.append(plt.Line2D([], [], color="#1f3b73", linewidth=0.8, label="message"))
-    ax.legend(handles=handles, loc="upper left", bbox_to_anchor=(1.005, 1.0), fontsize=7, frameon=False)
+    # Two legends: what the upper band of a row shows, and the lower one.
+    phases = ax.legend(handles=[Patch(color=c, label=n) for n, c in pcol.items()],
+                       title="phase (upper half of a row)", title_fontsize=7.5, loc="upper left",
+                       bbox_to_anchor=(1.005, 1.0), fontsize=7, frameon=False, alignment="left")
+    ax.add_artist(phases)
+    acts = [Patch(color=ACTIVITY_COLOURS[k], label=k) for k in ACTIVITIES]
+    acts.append(plt.Line2D([], [], color="#1f3b73", linewidth=0.8, label="message"))
+    strip.legend(handles=acts, title="activity (lower half of a row)", title_fontsize=7.5,
+                 loc="upper left",
+                 bbox_to_anchor=(1.005, 1.0), fontsize=7, frameon=False, alignment="left")
     fig.subplots_adjust(left=0.07, right=0.84, top=1 - 0.5 / fig.get_size_inches()[1],
                         bottom=0.5 / fig.get_size_inches()[1])
-    meta = dict(META)
+    meta = dict(META.get(out.rsplit(".", 1)[-1], {}))
     if out.endswith(".png"):
         meta["zcube-gantt"] = json.dumps(layout(fig, ax, tracks))
     fig.savefig(out, dpi=DPI, metadata=meta)

@@ -15,20 +15,20 @@ from collections import defaultdict
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
+plt.rcParams["svg.hashsalt"] = "zcube"  # SVG ids from the content, not a random salt
 from matplotlib.lines import Line2D
+from matplotlib.ticker import FixedLocator, FuncFormatter, NullFormatter
 
-META = {"Software": None}  # no version string: the same CSV gives the same picture
+# No version string nor date: the same CSV gives the same file, in every format.
+META = {"png": {"Software": None}, "svg": {"Date": None}, "pdf": {"CreationDate": None}}
 FIGURES = []  # what --describe writes
 FORMAT = "png"
 OOM_STYLE = dict(marker="x", color="red", ms=7, mew=1.5, ls="none")
 OOM_LABEL = "out of memory"
 
-# Units of the values a sweep or a CSV column holds (base units: s, B/s, B).
-UNITS = {"s": 1, "ms": 1e-3, "us": 1e-6, "ns": 1e-9, "ps": 1e-12, "m": 60, "h": 3600,
-         "Bps": 1, "kBps": 1e3, "KBps": 1e3, "MBps": 1e6, "GBps": 1e9, "KiBps": 1024.0,
-         "MiBps": 1048576.0, "GiBps": 1073741824.0, "bps": 0.125, "kbps": 125.0, "Kbps": 125.0,
-         "Mbps": 125e3, "Gbps": 125e6, "B": 1, "kB": 1e3, "KB": 1e3, "MB": 1e6, "GB": 1e9,
-         "KiB": 1024.0, "MiB": 1048576.0, "GiB": 1073741824.0}
+# Units of the values a sweep or a CSV column holds, to base units (s, B/s, B, flop/s): SimGrid's
+# tables as zcube parses them, given by zcube (--units, src/machine/units.hpp); none without it.
+UNITS = {}
 FLAG_LABELS = {"nodes": "nodes P", "latency": "message start-up (s)",
                "bandwidth": "channel bandwidth (B/s)", "per-hop": "per-hop cost (s)",
                "host-latency": "host link start-up (s)", "host-bandwidth": "host link bandwidth (B/s)",
@@ -63,7 +63,8 @@ def quantity(s):
     v = number(s)
     if v is not None:
         return v
-    m = re.fullmatch(r"\s*([-+0-9.eE]+)\s*([A-Za-z]+)\s*", s or "")
+    # As SimGrid reads it: a number, then the unit right after it.
+    m = re.fullmatch(r"\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)([A-Za-z]+)", s or "")
     if m and m.group(2) in UNITS and number(m.group(1)) is not None:
         return number(m.group(1)) * UNITS[m.group(2)]
     return None
@@ -104,23 +105,35 @@ def save(fig, path):
                                 and l.get_label() != "ideal"),
                   "oom_points": sum(len(l.get_xdata()) for l in ax.get_lines()
                                     if l.get_label() in (OOM_LABEL, "_oom")),
-                  "points": sum(len(c.get_offsets()) for c in ax.collections)}
+                  "points": sum(len(c.get_offsets()) for c in ax.collections),
+                  "ylim": [float(v) for v in ax.get_ylim()],
+                  "yticklabels": [t.get_text() for t in ax.get_yticklabels()]}
                  for ax in fig.axes],
         "legend": legend_labels(fig)})
     # Room for a figure legend under the panels and for the title above them.
     fig.tight_layout(rect=(0, 0.09 if fig.legends else 0, 1, 0.96 if fig._suptitle else 1))
-    fig.savefig(path, dpi=110, metadata=META if FORMAT == "png" else None)
+    fig.savefig(path, dpi=110, metadata=META[FORMAT])
     plt.close(fig)
 
 
-def curves(ax, groups, xkey, ykey, colors, ideal=None, logy=False):
-    """One line per group (colour fixed per label across panels); unfinished runs marked."""
-    oom_x = []
-    for label, rs in sorted(groups.items(), key=lambda kv: natural_key(kv[0])):
+def curves(ax, groups, xkey, ykey, colors, ideal=None, logy=False, styles=None, dodge=0.0):
+    """One line per group (colour and style fixed per label across panels). Series that coincide
+    stay visible: `dodge` shifts series k by k * dodge octaves along x, and hollow or dashed styles
+    (`styles`: label -> plot kwargs) show the one beneath. An unfinished run (out of memory) is a
+    cross in its series' colour, on a row of its own at the bottom of the panel."""
+    oom = []
+    labels = sorted(groups, key=natural_key)
+    for k, label in enumerate(labels):
+        rs = groups[label]
+        shift = 2 ** ((k - (len(labels) - 1) / 2) * dodge)
+        style = dict(marker="o", ms=4)
+        style.update((styles or {}).get(label, {}))
         pts = sorted((number(r[xkey]), number(r[ykey])) for r in rs if number(r[ykey]) is not None)
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], marker="o", ms=3, label=label,
-                color=colors[label])
-        oom_x += [number(r[xkey]) for r in rs if r[ykey] == "oom"]
+        ax.plot([p[0] * shift for p in pts], [p[1] for p in pts], label=label,
+                color=colors[label], **style)
+        xs = [number(r[xkey]) * shift for r in rs if r[ykey] == "oom"]
+        if xs:
+            oom.append((label, xs))
     if ideal:
         ax.plot(ideal, ideal if ykey == "speedup" else [1] * len(ideal), "k:", lw=0.8,
                 label="ideal")
@@ -129,26 +142,60 @@ def curves(ax, groups, xkey, ykey, colors, ideal=None, logy=False):
     ax.set_xticklabels([str(int(x)) for x in ideal or []])
     if logy:
         ax.set_yscale("log", base=2)
-    if oom_x:
-        # At the bottom edge of the panel, where no curve ends.
-        ax.plot(oom_x, [0.02] * len(oom_x), transform=ax.get_xaxis_transform(), label="_oom",
-                **OOM_STYLE)
+        ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    ax.zc_oom = oom  # drawn by oom_band once every panel has its curves
     ax.grid(alpha=0.3)
-    return bool(oom_x)
+    return bool(oom)
+
+
+def oom_band(axes, colors, logy=False):
+    """The out-of-memory crosses of curves() in a band under the curves of every panel, one row
+    per series (the same row in every panel), below a thin line: no cross sits at a y value."""
+    labels = sorted({l for ax in axes for l, _ in getattr(ax, "zc_oom", [])}, key=natural_key)
+    if not labels:
+        return
+    band = 0.05 * (len(labels) + 0.5)
+    done = set()
+    for ax in axes:
+        limits = ax.get_ylim()
+        key = id(ax.get_shared_y_axes().get_siblings(ax)[0])
+        if key not in done:  # panels sharing y: extend once
+            done.add(key)
+            lo, hi = limits
+            ticks = [t for t in ax.get_yticks() if lo <= t <= hi]
+            if logy:
+                new_lo = lo / (hi / lo) ** (band / (1 - band))
+            else:
+                new_lo = lo - (hi - lo) * band / (1 - band)
+            ax.set_ylim(new_lo, hi)
+            ax.set_yticks(ticks)
+            if logy:
+                ax.set_yticklabels([f"{t:g}" for t in ticks])
+        ax.plot([0, 1], [band, band], transform=ax.transAxes, color="grey", lw=0.6)
+        for label, xs in getattr(ax, "zc_oom", []):
+            row = labels.index(label)
+            ax.plot(xs, [band * (len(labels) - row - 0.25) / (len(labels) + 0.5)] * len(xs),
+                    transform=ax.get_xaxis_transform(), label="_oom",
+                    **dict(OOM_STYLE, color=colors[label]))
 
 
 def palette(labels):
     return {l: "C%d" % i for i, l in enumerate(sorted(labels, key=natural_key))}
 
 
-def figure_legend(fig, colors, ideal=True, oom=False, **kw):
-    h = [Line2D([], [], color=c, marker="o", ms=3, label=l)
-         for l, c in sorted(colors.items(), key=lambda kv: natural_key(kv[0]))]
+def figure_legend(fig, colors, ideal=True, oom=False, styles=None, extra=(), **kw):
+    h = []
+    for l, c in sorted(colors.items(), key=lambda kv: natural_key(kv[0])):
+        style = dict(marker="o", ms=4)
+        style.update((styles or {}).get(l, {}))
+        h.append(Line2D([], [], color=c, label=l, **style))
     if ideal:
-        h.append(Line2D([], [], color="k", ls=":", lw=0.8, label="ideal"))
+        h.append(Line2D([], [], color="k", ls=":", lw=0.8, label="ideal (speed-up = P)"))
+    h += list(extra)
     if oom:
-        h.append(Line2D([], [], label=OOM_LABEL, **OOM_STYLE))
-    fig.legend(handles=h, fontsize=7, **kw)
+        h.append(Line2D([], [], label=OOM_LABEL + " (series colour)", **dict(OOM_STYLE,
+                                                                             color="dimgrey")))
+    fig.legend(handles=h, fontsize=9, **kw)
 
 
 def kurc(d):
@@ -183,7 +230,10 @@ def kurc(d):
     if su:
         keys = list(dict.fromkeys((r["scene"], r["size"]) for r in su))
         colors = palette({r["scheme"] for r in su})
-        fig, axes = plt.subplots(1, len(keys), figsize=(4 * len(keys), 4.4), sharey=True,
+        # The HBP variants lie on their RS twins: dashed, hollow, another marker.
+        styles = {s: (dict(ls="--", marker="s", ms=6, mfc="white") if s.endswith("hbp")
+                      else dict(marker="o", ms=4)) for s in colors}
+        fig, axes = plt.subplots(1, len(keys), figsize=(4 * len(keys), 4.6), sharey=True,
                                  squeeze=False)
         axes = axes[0]
         oom = False
@@ -192,12 +242,16 @@ def kurc(d):
             for r in su:
                 if r["scene"] == scene and r["size"] == size:
                     g[r["scheme"]].append(r)
-            oom |= curves(ax, g, "nodes", "speedup", colors, ideal=[1, 2, 4, 8, 16])
-            ax.set_title(f"{scene}, {size}x{size}")
+            oom |= curves(ax, g, "nodes", "speedup", colors, ideal=[1, 2, 4, 8, 16],
+                          styles=styles, dodge=0.04)
+            ax.set_title(f"{scene.replace('pot', ' POT')}, {size}x{size}")
             ax.set_xlabel("nodes P")
-        axes[0].set_ylabel("speed-up over the sequential z-buffer (1 node)")
-        fig.suptitle("Kurç et al. merging schemes on the iPSC/2 model (4 MB nodes), P = 1..16")
-        figure_legend(fig, colors, oom=oom, loc="lower center", ncol=len(colors) + 2)
+        oom_band(axes, colors)
+        axes[0].set_ylabel("speed-up over the scanline z-buffer (1 node)")
+        fig.suptitle("Kurç et al. merging schemes on the iPSC/2 model (4 MB nodes), P = 1..16 "
+                     "(the paper's speed-up figure is held out, not drawn)", fontsize=11)
+        figure_legend(fig, colors, oom=oom, styles=styles, loc="lower center",
+                      ncol=len(colors) + 2)
         save(fig, os.path.join(d, "kurc", "speedup.png"))
 
 
@@ -205,29 +259,48 @@ def charles(d):
     su = rows(os.path.join(d, "charles", "speedup.csv"))
     if not su:
         return
-    for ykey, fname, ylabel in (("speedup", "speedup.png", "speed-up over the sequential renderer"),
-                                ("efficiency", "efficiency.png", "efficiency (speed-up / P)")):
-        fig, ax = plt.subplots(figsize=(6.5, 4.8))
+    for ykey, fname, ylabel in (
+            ("speedup", "speedup.png", "speed-up over the sequential renderer (1 node)"),
+            ("efficiency", "efficiency.png", "efficiency (speed-up / P)")):
+        fig, ax = plt.subplots(figsize=(7.5, 5.2))
         g = defaultdict(list)
         for r in su:
             r = dict(r)
             sp = number(r["speedup"])
             r["efficiency"] = ("oom" if r["speedup"] == "oom" else "") if sp is None \
                 else str(sp / number(r["nodes"]))
-            g[f'{r["scene"]} {r["size"]}x{r["size"]} {r["topology"]}'].append(r)
-        oom = curves(ax, g, "nodes", ykey, palette(g), ideal=[1, 2, 4, 8, 16])
-        paper = [(number(r["nodes"]), number(r["paper_speedup"])) for r in su
+            topo = "hypercube" if r["topology"] == "cube" else "ring"
+            g[f'{r["scene"]} {r["size"]}x{r["size"]}, {topo}'].append(r)
+        colors = {}
+        styles = {}
+        scenes = list(dict.fromkeys(l.split(",")[0] for l in sorted(g, key=natural_key)))
+        for l in g:
+            colors[l] = "C%d" % scenes.index(l.split(",")[0])
+            styles[l] = dict(marker="o", ms=4) if l.endswith("hypercube") else \
+                dict(ls="--", marker="s", ms=5, mfc="white")
+        oom = curves(ax, g, "nodes", ykey, colors, ideal=[1, 2, 4, 8, 16], styles=styles,
+                     dodge=0.03)
+        oom_band([ax], colors)
+        paper = [(number(r["nodes"]), number(r["paper_speedup"]), r) for r in su
                  if number(r["paper_speedup"])]
         if paper:
+            r0 = paper[0][2]
             ax.plot([p[0] for p in paper],
                     [p[1] if ykey == "speedup" else p[1] / p[0] for p in paper],
-                    "k*", ms=12, label="paper (teapot, hypercube)")
+                    "k*", ms=12, label=f'paper (Charles et al.: {r0["scene"]} '
+                                       f'{r0["size"]}x{r0["size"]}, hypercube)')
         if oom:
-            ax.plot([], [], label=OOM_LABEL, **OOM_STYLE)
+            ax.plot([], [], label=OOM_LABEL + " (series colour)",
+                    **dict(OOM_STYLE, color="dimgrey"))
         ax.set_xlabel("nodes P")
         ax.set_ylabel(ylabel)
-        ax.set_title("Charles et al. elastic z-buffer on the iPSC/860 model, P = 1..16")
-        ax.legend(fontsize=7)
+        ax.set_title("Charles et al. elastic z-buffer on the iPSC/860 model,\n"
+                     "hypercube and ring topologies, P = 1..16",
+                     fontsize=10.5)
+        handles = [h for h in ax.get_legend_handles_labels()[0]
+                   if not h.get_label().startswith("_")]
+        ax.legend(handles=sorted(handles, key=lambda h: natural_key(h.get_label())),
+                  fontsize=8.5, loc="upper left")
         save(fig, os.path.join(d, "charles", fname))
 
 
@@ -242,10 +315,11 @@ def blazek(d, sub="blazek"):
         return
     methods = list(dict.fromkeys(r["method"] for r in su))
     colors = palette({spheres(r) for r in su})
-    for ykey, fname, ylabel in (("speedup", "speedup.png", "speed-up over the sequential renderer"),
-                                ("efficiency", "efficiency.png", "efficiency (speed-up / P)")):
-        # One panel per method, each on its own log2 scale: the weak methods are not flattened.
-        fig, axes = plt.subplots(1, len(methods), figsize=(4 * len(methods), 4.4), sharey=False,
+    for ykey, fname, ylabel in (
+            ("speedup", "speedup.png", "speed-up over node-initiated on 1 node"),
+            ("efficiency", "efficiency.png", "efficiency (speed-up / P)")):
+        # One panel per method on one shared log2 scale: the methods compare at a glance.
+        fig, axes = plt.subplots(1, len(methods), figsize=(4 * len(methods), 4.6), sharey=True,
                                  squeeze=False)
         axes = axes[0]
         oom = False
@@ -257,39 +331,130 @@ def blazek(d, sub="blazek"):
             oom |= curves(ax, g, "nodes", ykey, colors, ideal=[1, 2, 4, 8, 16, 32], logy=True)
             ax.set_title(m)
             ax.set_xlabel("nodes P")
+        oom_band(axes, colors, logy=True)
         axes[0].set_ylabel(ylabel + " (log scale)")
         fig.suptitle("Blazek's four decompositions on the iPSC/2 model (16 MiB nodes, 512x512), "
                      "P = 1..32")
-        figure_legend(fig, colors, oom=oom, loc="lower center", ncol=len(colors) + 2)
+        figure_legend(fig, colors, oom=oom, loc="lower center", ncol=min(len(colors) + 2, 10))
         save(fig, os.path.join(d, sub, fname))
 
 
+def calibration(d):
+    """Predicted against the paper's figure for every calibration target: the fit (in sample,
+    with the prior table before it) and the cross-validation (each fold's targets predicted by a
+    fit that never saw them)."""
+    tg = rows(os.path.join(d, "calibration", "targets.csv"))
+    cv = rows(os.path.join(d, "calibration", "crossval.csv"))
+    if not tg:
+        return
+    phase_marks = {"span_list_creation": "o", "local_zbuffer": "s", "pixel_merging": "^"}
+
+    def phase(target):
+        return target.rsplit("/", 1)[-1]
+
+    panels = [("fit", tg)] + ([("cross-validation", cv)] if cv else [])
+    fig, axes = plt.subplots(1, len(panels), figsize=(6.2 * len(panels), 5.6), squeeze=False)
+    axes = axes[0]
+    values = [number(r["paper"]) for r in tg] + [number(r["fitted"]) for r in tg] + \
+        [number(r["prior"]) for r in tg] + [number(r["predicted_ms"]) for r in cv or []]
+    values = [v for v in values if v]
+    lo, hi = min(values) / 1.3, max(values) * 1.3
+    for ax, (name, rs) in zip(axes, panels):
+        ax.fill_between([lo, hi], [lo / 1.1, hi / 1.1], [lo * 1.1, hi * 1.1], color="0.85",
+                        label="within 10 %")
+        ax.plot([lo, hi], [lo, hi], "k-", lw=0.8, label="predicted = paper")
+        if name == "fit":
+            for r in rs:
+                m = phase_marks.get(phase(r["target"]), "o")
+                ax.scatter(number(r["paper"]), number(r["prior"]), marker=m, s=26,
+                           facecolors="none", edgecolors="0.45")
+                ax.scatter(number(r["paper"]), number(r["fitted"]), marker=m, s=30, color="C0")
+            ax.scatter([], [], marker="o", facecolors="none", edgecolors="0.45",
+                       label="prior table (sources, before the fit)")
+            ax.scatter([], [], marker="o", color="C0", label="fitted table")
+            ax.set_title("Fit: all targets (in sample)", fontsize=10.5)
+        else:
+            folds = list(dict.fromkeys(r["fold"] for r in rs))
+            for r in rs:
+                ax.scatter(number(r["paper_ms"]), number(r["predicted_ms"]),
+                           marker=phase_marks.get(phase(r["target"]), "o"), s=30,
+                           color="C%d" % (folds.index(r["fold"]) + 1))
+            for i, f in enumerate(folds):
+                ax.scatter([], [], marker="o", color="C%d" % (i + 1),
+                           label=f"fold {f.replace('_', ' #').replace('pot', ' POT')} held out")
+            ax.set_title("Cross-validation: each fold predicted by a fit without it", fontsize=10.5)
+        for ph, m in phase_marks.items():
+            ax.scatter([], [], marker=m, color="black", s=22, label=ph.replace("_", " "))
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlim(lo, hi)
+        ax.set_ylim(lo, hi)
+        ticks = [t for t in (100, 200, 300, 500, 700, 1000, 1500, 2000, 3000, 5000) if lo <= t <= hi]
+        for axis in (ax.xaxis, ax.yaxis):
+            axis.set_major_locator(FixedLocator(ticks))
+            axis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+            axis.set_minor_formatter(NullFormatter())
+        ax.set_aspect("equal")
+        ax.set_xlabel("paper: Kurç et al. Table 2, phase time (ms)")
+        ax.set_ylabel("zcube: predicted phase time (ms)")
+        ax.grid(alpha=0.3, which="both")
+        ax.legend(fontsize=8, loc="upper left")
+    fig.suptitle("Calibration of the iPSC/2 CPU costs against Kurç et al. Table 2 (16 nodes)")
+    save(fig, os.path.join(d, "calibration", "calibration.png"))
+
+
 def fidelity(d):
+    """The error of the analytic and flow models against circuit, run by run (deterministic:
+    virtual times only; the host's wall times are in host_cost.csv, not plotted)."""
     fr = rows(os.path.join(d, "fidelity.csv"))
     if not fr:
         return
-    # Every point labelled: its colour is the run, its marker the network model.
     runs = list(dict.fromkeys(r["run"] for r in fr))
-    marks = {"analytic": "o", "flow": "s", "circuit": "^"}
-    fig, ax = plt.subplots(figsize=(9, 5.5))
+    models = {"analytic": ("o", "#1f77b4", -0.17), "flow": ("s", "#d95f02", 0.17)}
+    fig, ax = plt.subplots(figsize=(8.5, 0.42 * len(runs) + 1.6))
+    ax.axvline(0, color="black", lw=1.2, label="circuit (the reference)")
     for r in fr:
-        if number(r["wall_s"]) is None:
+        if r["fidelity"] not in models or number(r["rel_error"]) is None:
             continue
-        ax.scatter(number(r["wall_s"]), abs(number(r["rel_error"]) or 0) * 100, s=28,
-                   color=plt.cm.tab20(runs.index(r["run"]) % 20), marker=marks[r["fidelity"]])
-    h = [Line2D([], [], color=plt.cm.tab20(i % 20), marker="o", ls="none", label=run)
-         for i, run in enumerate(runs)]
-    h += [Line2D([], [], color="grey", marker=m, ls="none", label=f) for f, m in marks.items()]
-    ax.legend(handles=h, fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
-    ax.set_xscale("log")
-    ax.set_yscale("symlog", linthresh=1e-3)
-    ax.set_ylim(bottom=0)
-    ax.set_xlabel("host wall time of the run (s)")
-    ax.set_ylabel("|error| of the virtual time against circuit (%)")
-    ax.set_title("Error against run time of the three network models\n"
-                 "(iPSC/2, iPSC/860 and Volvox models, P = 16, 128 and 1024)", fontsize=10)
-    ax.grid(alpha=0.3)
+        marker, colour, dy = models[r["fidelity"]]
+        e = number(r["rel_error"]) * 100
+        y = runs.index(r["run"]) + dy
+        ax.scatter(e, y, s=34, marker=marker, color=colour, zorder=3)
+        if abs(e) >= 0.05:
+            ax.annotate(f"{e:+.2f}%", (e, y), xytext=(6 if e >= 0 else -6, 0),
+                        textcoords="offset points", va="center", fontsize=7.5,
+                        ha="left" if e >= 0 else "right", color=colour)
+    ax.set_yticks(range(len(runs)))
+    ax.set_yticklabels([run_label(r) for r in runs], fontsize=8.5)
+    ax.invert_yaxis()
+    lo, hi = ax.get_xlim()
+    span = max(abs(lo), abs(hi), 1.0) * 1.25
+    ax.set_xlim(-span, span * 0.6 if hi < span * 0.4 else span)
+    ax.set_xlabel("error of the virtual time against circuit (%)")
+    ax.set_ylabel("run (algorithm, scene, machine, P)")
+    ax.set_title("Network models against circuit switching (the reference), run by run", fontsize=10.5)
+    ax.grid(axis="x", alpha=0.3)
+    handles = [Line2D([], [], color="black", lw=1.2, label="circuit (the reference)")]
+    handles += [Line2D([], [], marker=m, color=c, ls="none", label=f + (
+        ": no contention" if f == "analytic" else ": SimGrid's bandwidth sharing"))
+        for f, (m, c, _) in models.items()]
+    fig.legend(handles=handles, fontsize=8.5, loc="lower center", ncol=3, frameon=False)
     save(fig, os.path.join(d, "fidelity.png"))
+
+
+def run_label(run):
+    """'pair-rs-1pot-ipsc2-16' -> 'pair-rs, 1pot, iPSC/2, P = 16'."""
+    machines = {"ipsc2": "iPSC/2", "ipsc860": "iPSC/860", "volvox": "Volvox"}
+    parts = run.split("-")
+    nodes = parts.pop()
+    ring = parts[-1] == "ring" and parts.pop()
+    machine = machines.get(parts.pop(), "?")
+    # The algorithm is the longest known prefix; the rest names the scene.
+    algos = ("object-forwarding", "node-initiated", "aapc-hbp", "pair-rs", "zbuf-exc", "elastic")
+    name = "-".join(parts)
+    algo = next((a for a in algos if name.startswith(a)), parts[0])
+    scene = name[len(algo):].strip("-").replace("-", " ")
+    return f"{algo}, {scene}, {machine}{' ring' if ring else ''}, P = {nodes}"
 
 
 def sweep(path, x, y, out):
@@ -358,15 +523,19 @@ def main(argv):
     global FORMAT
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--format", choices=("png", "svg", "pdf"), default="png")
+    p.add_argument("--units", help="zcube's unit tables as JSON ({kind: {unit: factor}})")
     p.add_argument("--describe", help="write what every figure shows as JSON")
     p.add_argument("--sweep", nargs=4, metavar=("CSV", "X", "Y", "OUT"))
     p.add_argument("results", nargs="?")
     a = p.parse_args(argv)
     FORMAT = a.format
+    if a.units:
+        for table in json.loads(a.units).values():
+            UNITS.update(table)
     if a.sweep:
         sweep(*a.sweep)
     elif a.results:
-        for part in (kurc, charles, blazek, fidelity):
+        for part in (kurc, charles, blazek, fidelity, calibration):
             part(a.results)
         if os.path.isdir(os.path.join(a.results, "blazek-quick")):
             blazek(a.results, "blazek-quick")

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# The plots of `zcube reproduce` are fit for a paper (issue 15, finding 8), read from what the plot
-# script says it drew (--describe): every series in the legend, out-of-memory points marked,
-# machine and P in the titles, log2 node axes, the Blazek panels on log scales, every fidelity
-# point labelled, axis labels with units, and the other formats.
+# The plots of `zcube reproduce` are fit for a paper, read from what the plot script says it drew
+# (--describe): every series in the legend, out-of-memory points marked, machine and P in the
+# titles, each speed-up's reference in its y label, log2 node axes, the Blazek panels on one shared
+# log scale, every fidelity run labelled (no host time), the calibration plot, axis labels with
+# units, and the other formats.
 # usage: plots.sh SOURCE_DIR
 set -u
 src=$1
@@ -15,7 +16,8 @@ fi
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 mkdir -p "$tmp/r"
-for f in kurc/speedup.csv kurc/table2.csv charles/speedup.csv blazek/speedup.csv fidelity.csv; do
+for f in kurc/speedup.csv kurc/table2.csv charles/speedup.csv blazek/speedup.csv fidelity.csv \
+  calibration/targets.csv calibration/crossval.csv; do
   mkdir -p "$tmp/r/$(dirname "$f")"
   cp "$src/results/$f" "$tmp/r/$f"
 done
@@ -33,16 +35,19 @@ def rows(p):
 
 check(set(figs) >= {"kurc/speedup.svg", "kurc/table2.svg", "charles/speedup.svg",
                     "charles/efficiency.svg", "blazek/speedup.svg", "blazek/efficiency.svg",
-                    "fidelity.svg"}, "every figure drawn as SVG: %s" % sorted(figs))
+                    "fidelity.svg", "calibration/calibration.svg"},
+      "every figure drawn as SVG: %s" % sorted(figs))
 k = figs["kurc/speedup.svg"]
 schemes = {r["scheme"] for r in rows("kurc/speedup.csv")}
 check(schemes <= set(k["legend"]), "kurc speed-up legend has every scheme %s: %s" % (sorted(schemes), k["legend"]))
 ooms = sum(1 for r in rows("kurc/speedup.csv") if r["speedup"] == "oom")
-check("out of memory" in k["legend"] and sum(a["oom_points"] for a in k["axes"]) == ooms,
+check(any(l.startswith("out of memory") for l in k["legend"])
+      and sum(a["oom_points"] for a in k["axes"]) == ooms,
       "kurc out-of-memory points marked: %d of %d" % (sum(a["oom_points"] for a in k["axes"]), ooms))
 check("iPSC/2" in k["title"] and "P =" in k["title"], "kurc title names machine and P: " + k["title"])
 check(all(a["xscale"] == "log" for a in k["axes"]), "kurc node axes log2")
 check(all(a["series"] == len(schemes) for a in k["axes"]), "kurc: every scheme a series in every panel")
+check("scanline" in k["axes"][0]["ylabel"], "kurc: the reference named: " + k["axes"][0]["ylabel"])
 b = figs["blazek/speedup.svg"]
 counts = {r["spheres"] for r in rows("blazek/speedup.csv")}
 check(len([l for l in b["legend"] if "sphere" in l]) == len(counts), "blazek legend: %s" % b["legend"])
@@ -50,10 +55,17 @@ nums = [int(l.split()[0]) for l in b["legend"] if "sphere" in l]
 check(nums == sorted(nums), "blazek legend in numeric order: %s" % nums)
 check(all(a["yscale"] == "log" for a in b["axes"]), "blazek panels on log scales (not flattened)")
 check("iPSC/2" in b["title"] and "P =" in b["title"], "blazek title: " + b["title"])
+check("node-initiated" in b["axes"][0]["ylabel"], "blazek: the reference named: " + b["axes"][0]["ylabel"])
+check(len({tuple(a["ylim"]) for a in b["axes"]}) == 1, "blazek panels share one y range")
 f = figs["fidelity.svg"]
 runs = {r["run"] for r in rows("fidelity.csv")}
-check(runs <= set(f["legend"]), "fidelity: every run labelled")
-check(f["axes"][0]["points"] == len(rows("fidelity.csv")), "fidelity: every point drawn")
+check(len(f["axes"][0]["yticklabels"]) == len(runs), "fidelity: every run labelled")
+check(f["axes"][0]["points"] == sum(1 for r in rows("fidelity.csv") if r["fidelity"] != "circuit"),
+      "fidelity: every point of analytic and flow drawn (circuit is the reference line)")
+check("wall" not in f["axes"][0]["xlabel"], "fidelity: no host time: " + f["axes"][0]["xlabel"])
+cal = figs["calibration/calibration.svg"]
+check(len(cal["axes"]) == 2 and cal["axes"][1]["points"] >= len(rows("calibration/crossval.csv")),
+      "calibration: fit and cross-validation panels, every held-out target drawn")
 c = figs["charles/speedup.svg"]
 check("iPSC/860" in c["axes"][0]["title"] and "P =" in c["axes"][0]["title"], "charles title")
 for name, fig in figs.items():
