@@ -20,7 +20,8 @@ static int cmd_calibrate(std::vector<std::string> args) {
   CalibrationOptions o;
   o.root = source_root();
   o.jobs = default_jobs();
-  std::string out = o.root + "/results/calibration";
+  // Installed: the working directory, never the install prefix.
+  std::string out = installed_data() ? "zcube-calibration" : o.root + "/results/calibration";
   bool write = false, no_crossval = false, overwrite = false;
   app.add_option("--jobs", o.jobs, "simulations at once")
       ->check(CLI::Range(1, 4096))

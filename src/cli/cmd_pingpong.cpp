@@ -5,6 +5,7 @@
 
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
+#include "cli/paths.hpp"
 #include "cli/sim_options.hpp"
 #include "repro/simulate.hpp"
 #include "util/output_file.hpp"
@@ -26,6 +27,7 @@ static int cmd_pingpong(std::vector<std::string> args) {
       ->capture_default_str();
   app.add_option("--report", report, "write the report JSON");
   if (int rc = parse(app, args); rc >= 0) return rc;
+  sf.machine = data_file(sf.machine);
   check_output_path(report, "--report");
   SimConfig cfg;
   sf.apply(cfg);

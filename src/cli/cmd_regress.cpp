@@ -33,6 +33,7 @@ static int cmd_regress(std::vector<std::string> args) {
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   if (int rc = parse(app, args); rc >= 0) return rc;
+  against = data_file(against); // tests/golden: the golden runs installed with the binary
   if (against.empty() && write.empty())
     throw UsageError("regress: give --against DIR (compare) and/or --write DIR (record)");
   if (!with.empty() && against.empty()) throw UsageError("regress: --with needs --against");

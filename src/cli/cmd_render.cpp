@@ -18,11 +18,13 @@ namespace zc::cli {
 
 static int cmd_render(std::vector<std::string> args) {
   CLI::App app{"Render a scene on the host (real wall-clock; the reference image)", "zcube render"};
-  std::string scene_path = default_scene_path(), image = "out/teapot.png", depth, size, report;
+  std::string scene_path = default_scene_path(), image, depth, size, report;
   int threads = 1;
   app.add_option("--scene", scene_path, "JSON scene, Blazek scene file, OBJ or Bezier patches")
       ->capture_default_str();
-  app.add_option("--image", image, "output image (PNG)")->capture_default_str();
+  app.add_option("--image", image,
+                 "output image (PNG; default: the scene's name in the working directory, e.g. "
+                 "teapot.png)");
   app.add_option("--depth", depth, "output depth (EXR)");
   app.add_option("--size", size, "image size WxH (overrides the scene's)");
   app.add_option("--threads", threads, "host threads (the image is identical for any count)")
@@ -30,6 +32,8 @@ static int cmd_render(std::vector<std::string> args) {
       ->capture_default_str();
   app.add_option("--report", report, "write counters and wall time as JSON");
   if (int rc = parse(app, args); rc >= 0) return rc;
+  scene_path = data_file(scene_path);
+  if (image.empty()) image = std::filesystem::path(scene_path).stem().string() + ".png";
 
   LoadOptions lo;
   if (!size.empty()) {

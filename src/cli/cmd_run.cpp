@@ -141,6 +141,8 @@ static int cmd_run(std::vector<std::string> args) {
   bool list = false;
   app.add_flag("--list", list, "list the algorithms and exit");
   if (int rc = parse(app, args); rc >= 0) return rc;
+  scene = data_file(scene);
+  sf.machine = data_file(sf.machine);
   if (list) {
     for (const auto& a : algorithms())
       std::cout << a.name << "  " << a.summary << "\n";

@@ -21,6 +21,25 @@ inline std::string source_root() {
   return ZCUBE_SOURCE_DIR;
 }
 
+// A data file named as in the checkout ("scenes/teapot.json", "platforms/ipsc2-16.xml",
+// "tests/golden"): as given when it exists from the working directory (or is absolute), else the
+// bundled one under source_root() when that exists, so the installed binary finds its scenes,
+// platforms and golden runs from any directory. Anything else is returned as given (its error
+// names it as the user wrote it).
+inline std::string data_file(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (path.empty() || fs::path(path).is_absolute() || fs::exists(path, ec)) return path;
+  const fs::path bundled = fs::path(source_root()) / path;
+  return fs::exists(bundled, ec) ? bundled.string() : path;
+}
+
+// Whether the data comes from an installed tree (<prefix>/share/zcube), where nothing is written.
+inline bool installed_data() {
+  const std::string root = source_root();
+  return root != "." && root != ZCUBE_SOURCE_DIR;
+}
+
 // The scene run, render and sweep use when none is given. It ships with the sources and the
 // installed data; found from the working directory, else where the data is (source_root).
 inline std::string default_scene_path() {

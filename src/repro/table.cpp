@@ -10,8 +10,10 @@ namespace zc {
 
 namespace {
 
+// RFC 4180: a cell holding a comma, a quote or a line break (CR or LF) is quoted, its quotes
+// doubled.
 std::string quote(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
+  if (s.find_first_of(",\"\r\n") == std::string::npos) return s;
   std::string q = "\"";
   for (char c : s) {
     if (c == '"') q += '"';
@@ -31,6 +33,20 @@ std::string line(const std::vector<std::string>& cells) {
   return l;
 }
 
+// A Markdown table cell: a '|' would end the cell, a line break the row.
+std::string md_cell(const std::string& s) {
+  std::string c;
+  for (char ch : s) {
+    if (ch == '|')
+      c += "\\|";
+    else if (ch == '\n' || ch == '\r')
+      c += ' ';
+    else
+      c += ch;
+  }
+  return c;
+}
+
 } // namespace
 
 std::string Table::csv() const {
@@ -44,7 +60,7 @@ std::string Table::markdown() const {
   std::string s = "|";
   for (const auto& h : header) {
     s += ' ';
-    s += h;
+    s += md_cell(h);
     s += " |";
   }
   s += "\n|";
@@ -55,7 +71,7 @@ std::string Table::markdown() const {
     s += "|";
     for (const auto& c : r) {
       s += ' ';
-      s += c;
+      s += md_cell(c);
       s += " |";
     }
     s += "\n";

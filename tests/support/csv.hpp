@@ -2,26 +2,57 @@
 // Rows of a committed CSV file (results/) as maps from column name to cell, for tests that check
 // a run against the tables zcube reproduce wrote.
 #include <fstream>
+#include <istream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
 namespace zc::test {
 
+// RFC 4180 records: quoted cells may hold commas, doubled quotes and line breaks.
+inline std::vector<std::vector<std::string>> csv_records(std::istream& in) {
+  std::vector<std::vector<std::string>> records;
+  std::vector<std::string> cells;
+  std::string cell;
+  bool quoted = false, any = false;
+  for (char c; in.get(c);) {
+    any = true;
+    if (quoted) {
+      if (c != '"')
+        cell += c;
+      else if (in.peek() == '"')
+        cell += char(in.get());
+      else
+        quoted = false;
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      cells.push_back(std::move(cell));
+      cell.clear();
+    } else if (c == '\n') {
+      cells.push_back(std::move(cell));
+      cell.clear();
+      records.push_back(std::move(cells));
+      cells.clear();
+      any = false;
+    } else if (c != '\r') {
+      cell += c;
+    }
+  }
+  if (any) {
+    cells.push_back(std::move(cell));
+    records.push_back(std::move(cells));
+  }
+  return records;
+}
+
 inline std::vector<std::map<std::string, std::string>> read_csv(const std::string& path) {
   std::ifstream f(path);
   std::vector<std::map<std::string, std::string>> rows;
-  std::string line;
   std::vector<std::string> header;
-  while (std::getline(f, line)) {
-    std::vector<std::string> cells;
-    std::stringstream ss(line);
-    for (std::string c; std::getline(ss, c, ',');)
-      cells.push_back(c);
-    if (line.ends_with(",")) cells.push_back("");
+  for (auto& cells : csv_records(f)) {
     if (header.empty()) {
-      header = cells;
+      header = std::move(cells);
       continue;
     }
     std::map<std::string, std::string> row;
