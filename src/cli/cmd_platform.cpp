@@ -4,6 +4,7 @@
 
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
+#include "cli/sim_options.hpp"
 #include "machine/platform_xml.hpp"
 #include "machine/units.hpp"
 #include "run/run_flags.hpp"
@@ -52,6 +53,7 @@ static int cmd_platform(std::vector<std::string> args) {
   std::string out;
   app.add_option("--machine", flags["machine"], "ipsc2, ipsc860 or volvox")->capture_default_str();
   app.add_option("--nodes", flags["nodes"], "number of nodes (cube: a power of two; up to 1024)")
+      ->type_name("INT")
       ->capture_default_str();
   app.add_option("--topology", flags["topology"], "cube or ring")->capture_default_str();
   const std::pair<const char*, const char*> whatifs[] = {
@@ -66,6 +68,7 @@ static int cmd_platform(std::vector<std::string> args) {
   for (const auto& [k, help] : whatifs)
     app.add_option("--" + std::string(k), given[k], help);
   app.add_option("-o,--output", out, "write to this file instead of standard output");
+  app.footer(whatif_help());
   if (int rc = parse(app, args); rc >= 0) return rc;
   check_output_path(out, "--output"); // before any work: a missing directory says so
 

@@ -6,6 +6,7 @@
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
 #include "cli/paths.hpp"
+#include "cli/sim_options.hpp"
 #include "machine/units.hpp"
 #include "repro/plot_script.hpp"
 #include "repro/progress.hpp"
@@ -67,6 +68,7 @@ static int cmd_sweep(std::vector<std::string> args) {
                "also run each algorithm's one-node reference (sequential; scanline for Kurc et "
                "al.; node-initiated for Blazek) for every combination of the other flags, so "
                "every row gets speedup and efficiency");
+  app.footer(whatif_help()); // units, ranges and each machine's figures
   if (int rc = parse(app, args); rc >= 0) return rc;
 
   std::vector<SweepAxis> axes;

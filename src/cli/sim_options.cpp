@@ -1,11 +1,13 @@
 #include "cli/sim_options.hpp"
 
+#include <cstdio>
 #include <cstdlib>
 #include <iomanip>
 #include <sstream>
 
 #include <simgrid/s4u/Engine.hpp>
 
+#include "machine/platform_xml.hpp"
 #include "run/run_flags.hpp"
 #include "sim/simgrid_args.hpp"
 #include "util/error.hpp"
@@ -41,6 +43,35 @@ void SimFlags::add_to(CLI::App& app) {
                  "repeatable");
   app.add_flag_callback("--help-cfg", print_simgrid_settings,
                         "list SimGrid's settings (--cfg names, values, defaults) and exit");
+  app.footer(whatif_help());
+}
+
+std::string whatif_help() {
+  std::ostringstream s;
+  s << std::setprecision(4)
+    << "What-if units (SimGrid's; `zcube units` lists them all), required on every flag:\n"
+       "  times  s ms us ns (also m h d w)    --latency, --per-hop, --host-latency: 0 .. 1 h\n"
+       "  rates  Bps kBps MBps GBps KiBps MiBps bps kbps Mbps    --bandwidth, --host-bandwidth: "
+       ">= 1 Bps\n"
+       "  sizes  B kB MB KiB MiB GiB    --memory: > 0\n"
+       "  --cpu-scale 1e-3 .. 1e3, --cost-scale 1e-6 .. 1e6 (plain numbers)\n"
+       "Each machine's own figures (docs/machines.md has their sources):\n"
+       "  machine   start-up short/long  bandwidth  per hop  host link        memory  clock    "
+       "switching\n";
+  for (const auto& name : machine_names()) {
+    const MachineSpec& m = machine_spec(name);
+    const NetworkParams& n = m.net;
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "  %-8s  %5.4g/%-5.4g us   %5.4g MBps  %4.3g us  %5.4g us %4.3g MBps  %2g MiB  "
+                  "%3g MHz  %s\n",
+                  name.c_str(), n.startup_short_s * 1e6, n.startup_long_s * 1e6,
+                  1e-6 / n.per_byte_s, n.per_hop_s * 1e6, n.host_startup_s * 1e6,
+                  1e-6 / n.host_per_byte_s, m.memory_bytes / 1048576, cpu_clock_hz(m) / 1e6,
+                  n.switching == Switching::Circuit ? "circuit" : "store-and-forward");
+    s << line;
+  }
+  return s.str();
 }
 
 void print_simgrid_settings() {

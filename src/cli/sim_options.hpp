@@ -32,6 +32,10 @@ struct SimFlags {
 } // namespace zc::cli
 
 namespace zc::cli {
+// The help footer of every simulating command: units and ranges of the what-ifs, and each
+// machine's own figures.
+std::string whatif_help();
+
 // --help-cfg: SimGrid's own list of its settings, then the process ends (exit status 0).
 [[noreturn]] void print_simgrid_settings();
 
