@@ -126,7 +126,7 @@ static int cmd_sweep(std::vector<std::string> args) {
                                root ? progress_printer("sweep (rank 0's share)")
                                     : std::function<void(const BatchProgress&)>{});
 #endif
-    return simulate_batch(cfgs, jobs, progress_printer("sweep"));
+    return simulate_batch(cfgs, jobs, progress_printer("sweep", cfgs.size()));
   });
   if (!root) return 0;
   nlohmann::json rows = sweep_rows(axes, points, reports);

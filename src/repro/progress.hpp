@@ -1,15 +1,20 @@
 #pragma once
 // The progress line of long batches on stderr: "label: 12/40 done, 8.1 s elapsed, about 19 s
 // left". Rewritten in place on a terminal; otherwise one line per tenth of the work or per 5 s,
-// whichever comes first (logs of CI stay readable, and a long batch is never silent for long
-// between completed points).
+// whichever comes first. A heartbeat thread repeats the line every 10 s while no point completes,
+// so a long job is never silent for longer (a single point may take minutes). Lines go out with
+// write(2), never through stdio: the batch forks its simulations while the heartbeat runs, and a
+// child must not inherit a stdio lock the heartbeat held.
 #include <unistd.h>
 
 #include <chrono>
+#include <condition_variable>
 #include <cstdio>
 #include <functional>
-#include <iostream>
+#include <memory>
+#include <mutex>
 #include <string>
+#include <thread>
 
 #include "run/batch.hpp"
 
@@ -25,30 +30,82 @@ inline std::string human_seconds(double s) {
   return buf;
 }
 
-inline std::function<void(const BatchProgress&)> progress_printer(const std::string& label) {
+class ProgressLine {
+public:
   using Clock = std::chrono::steady_clock;
-  const bool tty = isatty(2);
-  const auto start = Clock::now();
-  return
-      [label, tty, start, last = std::size_t(0), printed = start](const BatchProgress& p) mutable {
-        const auto now = Clock::now();
-        const double elapsed = std::chrono::duration<double>(now - start).count();
-        std::string text = label + ": " + std::to_string(p.done) + "/" + std::to_string(p.total) +
-                           " done" + (p.failed ? ", " + std::to_string(p.failed) + " failed" : "") +
-                           ", " + human_seconds(elapsed) + " elapsed";
-        if (p.done > 0 && p.done < p.total)
-          text += ", about " + human_seconds(elapsed / double(p.done) * double(p.total - p.done)) +
-                  " left";
-        const std::size_t tenth = p.done * 10 / std::max<std::size_t>(p.total, 1);
-        if (tty) {
-          std::cerr << "\r" << text << "\033[K" << (p.done == p.total ? "\n" : "") << std::flush;
-        } else if (p.done == p.total || tenth > last ||
-                   std::chrono::duration<double>(now - printed).count() >= 5) {
-          last = tenth;
-          printed = now;
-          std::cerr << text << "\n";
-        }
-      };
+
+  ProgressLine(std::string label, std::size_t total)
+      : label_(std::move(label)), tty_(isatty(2)), start_(Clock::now()), printed_(start_) {
+    state_.total = total;
+    heartbeat_ = std::thread([this] { beat(); });
+  }
+  ~ProgressLine() {
+    {
+      std::lock_guard<std::mutex> l(m_);
+      stop_ = true;
+    }
+    cv_.notify_all();
+    heartbeat_.join();
+  }
+  ProgressLine(const ProgressLine&) = delete;
+  ProgressLine& operator=(const ProgressLine&) = delete;
+
+  void update(const BatchProgress& p) {
+    std::lock_guard<std::mutex> l(m_);
+    state_ = p;
+    const std::size_t tenth = p.done * 10 / std::max<std::size_t>(p.total, 1);
+    const double quiet = std::chrono::duration<double>(Clock::now() - printed_).count();
+    if (tty_ || p.done == p.total || tenth > tenth_ || quiet >= 5) {
+      tenth_ = tenth;
+      emit(p.done == p.total);
+    }
+  }
+
+private:
+  // Every 10 s without a line, the line again (elapsed and ETA move on).
+  void beat() {
+    std::unique_lock<std::mutex> l(m_);
+    while (!stop_) {
+      cv_.wait_for(l, std::chrono::seconds(1));
+      const bool finished = state_.total > 0 && state_.done == state_.total;
+      if (!stop_ && !finished &&
+          std::chrono::duration<double>(Clock::now() - printed_).count() >= 10)
+        emit(false);
+    }
+  }
+
+  void emit(bool last) { // m_ held
+    printed_ = Clock::now();
+    const double elapsed = std::chrono::duration<double>(printed_ - start_).count();
+    const BatchProgress& p = state_;
+    std::string text = label_ + ": " + std::to_string(p.done) + "/" +
+                       (p.total ? std::to_string(p.total) : std::string("?")) + " done" +
+                       (p.failed ? ", " + std::to_string(p.failed) + " failed" : "") + ", " +
+                       human_seconds(elapsed) + " elapsed";
+    if (p.done > 0 && p.done < p.total)
+      text +=
+          ", about " + human_seconds(elapsed / double(p.done) * double(p.total - p.done)) + " left";
+    text = tty_ ? "\r" + text + "\033[K" + (last ? "\n" : "") : text + "\n";
+    (void)!::write(2, text.data(), text.size());
+  }
+
+  std::string label_;
+  bool tty_;
+  Clock::time_point start_, printed_;
+  BatchProgress state_;
+  std::size_t tenth_ = 0;
+  bool stop_ = false;
+  std::mutex m_;
+  std::condition_variable cv_;
+  std::thread heartbeat_;
+};
+
+// The callback of a batch; its heartbeat stops when the last copy of the callback is destroyed.
+// `total`: the number of points, when known before the first one completes.
+inline std::function<void(const BatchProgress&)> progress_printer(const std::string& label,
+                                                                  std::size_t total = 0) {
+  auto line = std::make_shared<ProgressLine>(label, total);
+  return [line](const BatchProgress& p) { line->update(p); };
 }
 
 } // namespace zc

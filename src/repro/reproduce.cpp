@@ -175,7 +175,7 @@ int reproduce(const ReproduceOptions& o) {
     }
   if (o.verbose && o.write)
     std::cerr << "reproduce: " << cfgs.size() << " simulations, " << o.jobs << " at a time\n";
-  const auto progress = o.verbose && o.write ? progress_printer("reproduce")
+  const auto progress = o.verbose && o.write ? progress_printer("reproduce", cfgs.size())
                                              : std::function<void(const BatchProgress&)>{};
   const auto reps =
       o.runner ? o.runner(cfgs, o.jobs, progress) : simulate_batch(cfgs, o.jobs, progress);
@@ -233,6 +233,8 @@ int reproduce(const ReproduceOptions& o) {
   }
 
   if (o.plots) {
+    if (o.verbose)
+      std::cerr << "reproduce: drawing the plots and " << charts.size() << " space-time diagrams\n";
     if (!charts.empty() && !draw_gantts(charts, o.root))
       std::cerr << "reproduce: Gantt charts not drawn (scripts/plot_gantt.py failed)\n";
     if (!run_plot_script(o.root, {"--format", o.plot_format, o.out}))
