@@ -90,8 +90,15 @@ void MpiComm::send(int dst, int tag, Bytes data) {
   if (stats_.log) stats_.log->activity(Activity::Send, t - t0_, t1 - t0_);
 }
 
+// Sends complete in the order they were posted (MPI's non-overtaking order per destination, and a
+// shared-memory transport drains its queues in order): testing from the oldest and stopping at the
+// first one in flight keeps a burst of sends linear (testing them all after every send made a
+// host's 1,024 descriptions cost half a million MPI_Test calls).
 void MpiComm::reap() {
-  std::erase_if(in_flight_, [](SendHandle& h) { return static_cast<MpiSend&>(*h).done(); });
+  std::size_t done = 0;
+  while (done < in_flight_.size() && static_cast<MpiSend&>(*in_flight_[done]).done())
+    ++done;
+  in_flight_.erase(in_flight_.begin(), in_flight_.begin() + std::ptrdiff_t(done));
 }
 
 void MpiComm::flush() {
