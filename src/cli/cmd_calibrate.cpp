@@ -7,6 +7,7 @@
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
 #include "cli/paths.hpp"
+#include "cli/sim_options.hpp"
 #include "repro/calibrate.hpp"
 #include "run/batch.hpp"
 #include "util/error.hpp"
@@ -39,7 +40,10 @@ static int cmd_calibrate(std::vector<std::string> args) {
   app.add_flag("--write", write, "also rewrite src/machine/calibrated_costs.hpp (then rebuild)");
   app.add_flag("--overwrite", overwrite,
                "replace the fit.json already in --out (the committed results/calibration/)");
+  BatchSimGridFlags simgrid;
+  simgrid.add_to(app);
   if (int rc = parse(app, args); rc >= 0) return rc;
+  simgrid.apply();
   o.cross_validate = !no_crossval;
   // Checked before the fit (minutes): a calibration is never replaced without being told.
   if (std::filesystem::exists(out + "/fit.json") && !overwrite)

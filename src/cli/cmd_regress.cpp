@@ -5,6 +5,7 @@
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
 #include "cli/paths.hpp"
+#include "cli/sim_options.hpp"
 #include "repro/regress.hpp"
 #include "repro/table.hpp"
 #include "run/batch.hpp"
@@ -32,7 +33,10 @@ static int cmd_regress(std::vector<std::string> args) {
                  "numbers within this relative difference are equal (0: bit for bit)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
+  BatchSimGridFlags simgrid;
+  simgrid.add_to(app);
   if (int rc = parse(app, args); rc >= 0) return rc;
+  simgrid.apply();
   against = data_file(against); // tests/golden: the golden runs installed with the binary
   if (against.empty() && write.empty())
     throw UsageError("regress: give --against DIR (compare) and/or --write DIR (record)");

@@ -2,6 +2,7 @@
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
 #include "cli/paths.hpp"
+#include "cli/sim_options.hpp"
 #include "repro/reproduce.hpp"
 #include "repro/simulate.hpp"
 #include "run/batch.hpp"
@@ -43,7 +44,10 @@ static int cmd_reproduce(std::vector<std::string> args) {
       ->capture_default_str();
   app.add_flag("--no-calibration", no_calibration,
                "skip the calibration's fit and validation (results/calibration/)");
+  BatchSimGridFlags simgrid;
+  simgrid.add_to(app);
   if (int rc = parse(app, args); rc >= 0) return rc;
+  simgrid.apply();
   o.plots = !no_plots;
   o.calibration = !no_calibration;
   if (which == "charles95") which = "charles"; // the names docs/index.md gives the papers

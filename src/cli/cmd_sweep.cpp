@@ -69,7 +69,10 @@ static int cmd_sweep(std::vector<std::string> args) {
                "al.; node-initiated for Blazek) for every combination of the other flags, so "
                "every row gets speedup and efficiency");
   app.footer(whatif_help()); // units, ranges and each machine's figures
+  BatchSimGridFlags simgrid;
+  simgrid.add_to(app);
   if (int rc = parse(app, args); rc >= 0) return rc;
+  simgrid.apply();
 
   std::vector<SweepAxis> axes;
   for (const auto& f : run_flag_names())

@@ -3,11 +3,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
 #include <simgrid/s4u/Engine.hpp>
 
 #include "machine/platform_xml.hpp"
+#include "repro/simulate.hpp"
 #include "run/run_flags.hpp"
 #include "sim/simgrid_args.hpp"
 #include "util/error.hpp"
@@ -95,7 +97,8 @@ void check_cfg_is_read(const std::string& name, const std::string& value,
   if (name.rfind("smpi/", 0) == 0)
     throw UsageError("--cfg " + name + ":" + value +
                      ": zcube runs no SMPI program, so SMPI's settings change nothing");
-  if (name.rfind("network/", 0) == 0 && fidelity != "flow")
+  // fidelity "": the runs' own, some of which may be flow (a batch command notes it).
+  if (name.rfind("network/", 0) == 0 && !fidelity.empty() && fidelity != "flow")
     throw UsageError("--cfg " + name + ":" + value + ": the " + fidelity +
                      " fidelity times messages itself; SimGrid's network settings take effect "
                      "under --fidelity flow only");
@@ -103,7 +106,9 @@ void check_cfg_is_read(const std::string& name, const std::string& value,
 
 } // namespace
 
-std::vector<std::string> SimFlags::simgrid_args() const {
+std::vector<std::string> simgrid_args_of(const std::vector<std::string>& cfg,
+                                         const std::vector<std::string>& log,
+                                         const std::string& fidelity) {
   std::vector<std::string> a;
   for (const auto& c : cfg) {
     const auto colon = c.find(':');
@@ -118,6 +123,32 @@ std::vector<std::string> SimFlags::simgrid_args() const {
     a.push_back("--log=" + l);
   }
   return a;
+}
+
+std::vector<std::string> SimFlags::simgrid_args() const {
+  return simgrid_args_of(cfg, log, fidelity);
+}
+
+void BatchSimGridFlags::add_to(CLI::App& app) {
+  app.add_option("--cfg", cfg,
+                 "a SimGrid setting name:value for every simulation, after zcube's own (network/* "
+                 "changes only runs under the flow fidelity; --help-cfg lists them); repeatable");
+  app.add_option("--log", log,
+                 "a SimGrid log setting for every simulation (e.g. "
+                 "root.thres:warning); repeatable");
+  app.add_flag_callback("--help-cfg", print_simgrid_settings,
+                        "list SimGrid's settings (--cfg names, values, defaults) and exit");
+}
+
+void BatchSimGridFlags::apply() const {
+  const auto args = simgrid_args_of(cfg, log, "");
+  check_simgrid_args(args);
+  for (const auto& c : cfg)
+    if (c.rfind("network/", 0) == 0)
+      std::cerr << "zcube: note: --cfg " << c
+                << " changes only the runs under the flow fidelity (the others time messages in "
+                   "zcube)\n";
+  set_batch_simgrid_args(args);
 }
 
 std::map<std::string, std::string> SimFlags::flags() const {

@@ -29,6 +29,20 @@ struct SimFlags {
   void apply(SimConfig& cfg) const;
 };
 
+// --cfg, --log and --help-cfg of the commands that run batches of simulations (sweep, reproduce,
+// regress, calibrate): the settings go to every simulation of the process.
+struct BatchSimGridFlags {
+  std::vector<std::string> cfg, log;
+  void add_to(CLI::App& app);
+  // Checks the settings (UsageError) and hands them to every batch (repro/simulate).
+  void apply() const;
+};
+
+// --cfg and --log as SimGrid arguments, checked against `fidelity` ("": a batch's mix).
+std::vector<std::string> simgrid_args_of(const std::vector<std::string>& cfg,
+                                         const std::vector<std::string>& log,
+                                         const std::string& fidelity);
+
 } // namespace zc::cli
 
 namespace zc::cli {

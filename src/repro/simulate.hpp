@@ -1,6 +1,7 @@
 #pragma once
 // The runs zcube makes: a simulation's report with the seeds' figures it corresponds to attached
 // (repro/paper_figures), so that the simulator below knows nothing of the papers.
+#include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -11,6 +12,10 @@ namespace zc {
 
 // Adds "paper" (the matching figures and the relative errors) when the report matches any.
 void attach_paper_figures(nlohmann::json& report);
+
+// SimGrid settings (--cfg=..., --log=...) every point of this process's batches gets after its
+// own: the --cfg/--log of reproduce, regress, calibrate and sweep.
+void set_batch_simgrid_args(std::vector<std::string> args);
 
 // One simulation's report, paper figures attached: the point runner of zcube's batches.
 nlohmann::json simulate_point(const SimConfig& cfg);

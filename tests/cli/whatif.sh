@@ -66,6 +66,18 @@ usage_error cfg-smpi "--cfg smpi/or:0:1:0: zcube runs no SMPI program" \
 "$zcube" run --help-cfg >"$tmp/helpcfg.out" 2>&1
 grep -q "network/model" "$tmp/helpcfg.out"
 expect help-cfg $? "$(head -c 300 "$tmp/helpcfg.out")"
+# --cfg/--log on the batch commands too: checked up front, and passed to every simulation.
+for cmd in "reproduce kurc --out $tmp/never" "regress --write $tmp/never" "calibrate --out $tmp/never" \
+  "sweep --nodes 2 --out $tmp/never"; do
+  usage_error "batch-cfg-smpi-${cmd%% *}" "zcube runs no SMPI program" $zcube $cmd --cfg smpi/or:1
+done
+flow_sweep() {
+  "$zcube" sweep --algorithm pair-rs --nodes 4 --fidelity flow --scene scenes/kurc/1pot.json \
+    --size 64x64 --no-plot --out "$tmp/$1" "${@:2}" >/dev/null 2>&1 &&
+    cut -d, -f9 "$tmp/$1/sweep.csv" | tail -1
+}
+[ -n "$(flow_sweep cfg-default)" ] && [ "$(flow_sweep cfg-default)" != "$(flow_sweep cfg-lv08 --cfg network/model:LV08)" ]
+expect sweep-cfg-reaches-the-simulations $? "$(flow_sweep cfg-default) vs $(flow_sweep cfg-lv08 --cfg network/model:LV08)"
 
 # --- finding 4: an honest regress ---------------------------------------------------------------
 cat >"$tmp/runs.json" <<'EOF'
