@@ -18,7 +18,8 @@ esac
 # The zcube command: compiler, build tools, the libraries it links, matplotlib for its plots, MPI
 # for --backend mpi.
 PKGS=(build-essential cmake ccache pkg-config libsimgrid-dev libglm-dev libopenimageio-dev
-      nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libssl-dev python3-matplotlib
+      nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libssl-dev libeigen3-dev
+      python3-matplotlib
       libopenmpi-dev openmpi-bin)
 # The tests: GoogleTest, pajeng (Paje trace checks), clang and its libFuzzer runtime, Mesa's
 # llvmpipe through EGL for the renderer benchmark.

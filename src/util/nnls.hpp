@@ -1,7 +1,7 @@
 #pragma once
-// Least squares under bounds for the calibration. Non-negative least squares, min |A x - b|^2
-// subject to x >= 0 (Lawson & Hanson 1974, ch. 23), for the calibration's small dense systems (tens
-// of rows, a handful of unknowns).
+// Least squares under bounds for the calibration and the probe. Non-negative least squares, min
+// |A x - b|^2 subject to x >= 0 (Lawson & Hanson 1974, ch. 23), and its two-bound form (Stark &
+// Parker's BVLS): one active-set method, each step's least squares on Eigen's column-pivoted QR.
 #include <vector>
 
 namespace zc {
@@ -13,8 +13,7 @@ using Matrix = std::vector<std::vector<double>>; // row-major: A[row][column]
 std::vector<double> nnls(const Matrix& A, const std::vector<double>& b);
 
 // x within lo <= x <= hi minimising |A x - b| (bounded least squares: the calibration keeps every
-// multiplier inside the plausible range of its physical estimate). Exact for the handful of
-// unknowns it is used with (it tries every assignment of the variables to free/lower/upper).
+// multiplier inside the plausible range of its physical estimate).
 std::vector<double> bounded_lsq(const Matrix& A, const std::vector<double>& b,
                                 const std::vector<double>& lo, const std::vector<double>& hi);
 

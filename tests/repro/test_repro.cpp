@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <set>
 #include <sstream>
 
@@ -132,6 +133,44 @@ TEST(BoundedLsq, StaysInsideItsBoxAndFindsTheInteriorOptimum) {
   EXPECT_NEAR(x[0], 1.25, 1e-12);
   EXPECT_DOUBLE_EQ(x[1], 1.5);
   EXPECT_THROW(bounded_lsq(A, {1, 2, 3}, {1, 0}, {0, 1}), std::invalid_argument);
+}
+
+TEST(BoundedLsq, MeetsTheKuhnTuckerConditionsOnRandomIllScaledProblems) {
+  // At the optimum of a box-constrained least squares, the gradient A^T (b - A x) is 0 on a free
+  // variable, <= 0 at a lower bound and >= 0 at an upper one; columns scaled 1e-3..1e3 apart would
+  // lose those digits to the normal equations' squared condition number.
+  std::mt19937 rng(7);
+  std::normal_distribution<double> normal(0, 1);
+  for (int t = 0; t < 300; ++t) {
+    const int n = 1 + t % 6, m = n + 4 + t % 5;
+    Matrix A(m, std::vector<double>(n));
+    std::vector<double> b(m), lo(n, 0.5), hi(n, 2.0);
+    for (auto& row : A)
+      for (int j = 0; j < n; ++j)
+        row[j] = std::fabs(normal(rng)) * std::pow(10.0, 3 * (j % 3) - 3);
+    for (auto& v : b)
+      v = 3 * normal(rng);
+    const auto x = bounded_lsq(A, b, lo, hi);
+    for (int j = 0; j < n; ++j) {
+      double w = 0, scale = 0;
+      for (int r = 0; r < m; ++r) {
+        double e = b[r];
+        for (int k = 0; k < n; ++k)
+          e -= A[r][k] * x[k];
+        w += A[r][j] * e;
+        scale += std::fabs(A[r][j]) * (std::fabs(b[r]) + 1);
+      }
+      const double tol = 1e-9 * scale;
+      ASSERT_GE(x[j], lo[j]);
+      ASSERT_LE(x[j], hi[j]);
+      if (x[j] == lo[j])
+        EXPECT_LE(w, tol) << t << " " << j;
+      else if (x[j] == hi[j])
+        EXPECT_GE(w, -tol) << t << " " << j;
+      else
+        EXPECT_NEAR(w, 0, tol) << t << " " << j;
+    }
+  }
 }
 
 TEST(PaperFigures, AKurcRunGetsItsThreeTable2FiguresWithTheirErrors) {
