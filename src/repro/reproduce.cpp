@@ -233,10 +233,11 @@ int reproduce(const ReproduceOptions& o) {
   }
 
   if (o.plots) {
-    if (o.verbose)
-      std::cerr << "reproduce: drawing the plots and " << charts.size() << " space-time diagrams\n";
+    if (o.verbose && !charts.empty())
+      std::cerr << "reproduce: drawing " << charts.size() << " space-time diagrams\n";
     if (!charts.empty() && !draw_gantts(charts, o.root))
       std::cerr << "reproduce: Gantt charts not drawn (scripts/plot_gantt.py failed)\n";
+    if (o.verbose) std::cerr << "reproduce: drawing the plots\n";
     if (!run_plot_script(o.root, {"--format", o.plot_format, o.out}))
       std::cerr << "reproduce: plots not drawn (scripts/plot_results.py failed; it needs "
                    "python3-matplotlib, which scripts/setup.sh installs)\n";
