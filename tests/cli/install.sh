@@ -15,7 +15,9 @@ trap 'rm -rf "$tmp"' EXIT
 mv "$tmp/prefix" "$tmp/moved"
 fail=0
 for f in bin/zcube share/zcube/scenes/teapot.json share/zcube/platforms/README.md \
-  share/zcube/scripts/plot_results.py share/zcube/tests/golden/runs.json; do
+  share/zcube/scripts/plot_results.py share/zcube/tests/golden/runs.json \
+  share/zcube/tests/golden/pair-rs-1pot-ipsc2-16.json share/man/man1/zcube.1 \
+  share/doc/zcube/LICENSE; do
   [ -e "$tmp/moved/$f" ] || { echo "FAIL not installed: $f"; fail=1; }
 done
 mkdir "$tmp/elsewhere"
@@ -35,6 +37,18 @@ fi
 }
 if ! grep -q "\"path\": \"$tmp/moved/share/zcube/scenes/teapot.json\"" r.json; then
   echo "FAIL default scene not read from the prefix: $(grep '"path"' r.json)"
+  fail=1
+fi
+# Bundled data named as in the checkout is found from any directory; render writes into the
+# working directory (no ./out created).
+"$tmp/moved/bin/zcube" run --algorithm pair-rs --scene scenes/kurc/1pot.json \
+  --machine platforms/ipsc2-16.xml --size 32x32 >"$tmp/bundled.txt" 2>&1 || {
+  echo "FAIL bundled scene and platform by their checkout names: $(head -c 300 "$tmp/bundled.txt")"
+  fail=1
+}
+"$tmp/moved/bin/zcube" render --size 32x32 >"$tmp/render.txt" 2>&1
+if [ ! -s teapot.png ] || [ -e out ]; then
+  echo "FAIL render's default image: $(ls) $(head -c 300 "$tmp/render.txt")"
   fail=1
 fi
 exit $fail
