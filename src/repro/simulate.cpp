@@ -1,9 +1,74 @@
 #include "repro/simulate.hpp"
 
+#include <map>
+#include <memory>
+#include <thread>
+#include <tuple>
+
 #include "repro/paper_figures.hpp"
+#include "scene/load.hpp"
 #include "sim/simulation.hpp"
 
 namespace zc {
+
+namespace {
+
+// Scenes loaded once in the process that runs a batch, before it forks the simulations: each
+// forked simulation inherits them (copy-on-write) instead of reading and tessellating its scene
+// again (Blazek's spheres, Kurc's pots: most points of `zcube reproduce` share a scene with
+// others, and the calibration's fit steps run the same six scenes over and over).
+using SceneKey = std::tuple<std::string, int, int>;
+std::map<SceneKey, std::shared_ptr<const Scene>>& scene_cache() {
+  static std::map<SceneKey, std::shared_ptr<const Scene>> cache;
+  return cache;
+}
+
+SceneKey scene_key(const SimConfig& c) {
+  return {c.scene_path, c.width, c.height};
+}
+
+// A scene is kept while the cache holds at most this many triangles (Blazek --full's largest
+// sphere scenes are loaded by their own simulations, as before).
+constexpr std::size_t kCacheTriangles = 4'000'000;
+
+// Loads the scenes two or more points use and the cache lacks, `jobs` at a time. A scene that
+// fails to load is left to its simulations, which report the error as before.
+void preload_scenes(const std::vector<SimConfig>& points, int jobs) {
+  auto& cache = scene_cache();
+  std::map<SceneKey, int> uses;
+  for (const auto& p : points)
+    if (!p.scene_path.empty()) ++uses[scene_key(p)];
+  std::vector<SceneKey> todo;
+  for (const auto& [k, n] : uses)
+    if (n >= 2 && !cache.contains(k)) todo.push_back(k);
+  std::vector<std::shared_ptr<const Scene>> loaded(todo.size());
+  std::vector<std::thread> workers;
+  const int n = std::min<int>(std::max(1, jobs), int(todo.size()));
+  for (int w = 0; w < n; ++w)
+    workers.emplace_back([&, w] {
+      for (std::size_t i = std::size_t(w); i < todo.size(); i += std::size_t(n)) {
+        try {
+          LoadOptions lo;
+          lo.width = std::get<1>(todo[i]);
+          lo.height = std::get<2>(todo[i]);
+          loaded[i] = std::make_shared<const Scene>(load_scene(std::get<0>(todo[i]), lo));
+        } catch (const std::exception&) {
+        }
+      }
+    });
+  for (auto& t : workers)
+    t.join();
+  std::size_t held = 0;
+  for (const auto& [k, s] : cache)
+    held += s->triangles.size();
+  for (std::size_t i = 0; i < todo.size(); ++i)
+    if (loaded[i] && held + loaded[i]->triangles.size() <= kCacheTriangles) {
+      held += loaded[i]->triangles.size();
+      cache.emplace(todo[i], std::move(loaded[i]));
+    }
+}
+
+} // namespace
 
 void attach_paper_figures(nlohmann::json& report) {
   if (auto paper = paper_figures_for(report); !paper.empty()) report["paper"] = paper;
@@ -21,14 +86,17 @@ void set_batch_simgrid_args(std::vector<std::string> args) {
 }
 
 nlohmann::json simulate_point(const SimConfig& cfg) {
+  const auto& cache = scene_cache();
+  const auto it = cfg.scene_path.empty() ? cache.end() : cache.find(scene_key(cfg));
+  const Scene* scene = it == cache.end() ? nullptr : it->second.get();
   const auto& extra = batch_simgrid_args();
   SimResult r;
   if (extra.empty()) {
-    r = run_simulation(cfg);
+    r = run_simulation(cfg, scene);
   } else {
     SimConfig c = cfg;
     c.simgrid_args.insert(c.simgrid_args.end(), extra.begin(), extra.end());
-    r = run_simulation(c);
+    r = run_simulation(c, scene);
   }
   attach_paper_figures(r.report);
   return r.report;
@@ -37,6 +105,7 @@ nlohmann::json simulate_point(const SimConfig& cfg) {
 std::vector<nlohmann::json>
 simulate_batch(const std::vector<SimConfig>& points, int jobs,
                const std::function<void(const BatchProgress&)>& progress) {
+  preload_scenes(points, jobs);
   return run_batch(points, jobs, simulate_point, progress);
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <numbers>
 #include <utility>
 
@@ -31,7 +32,7 @@ std::uint32_t vert(LocalMesh& m, const glm::dvec3& p, const glm::dvec3& n) {
 // maintaining all new vertices on the unit sphere." Edge midpoints are shared through a map keyed
 // by the (ordered) vertex pair, and normalize(a + b) is symmetric in a and b, so neighbouring faces
 // meet exactly (no cracks).
-LocalMesh make_sphere(int recursion) {
+static LocalMesh build_sphere(int recursion) {
   LocalMesh m;
   const glm::dvec3 oct[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
   for (const auto& p : oct)
@@ -65,6 +66,19 @@ LocalMesh make_sphere(int recursion) {
     }
   }
   return m;
+}
+
+// The unit sphere of each recursion level is built once a process and copied: Blazek's nodes
+// tessellate every sphere they receive, and a scene of N spheres asks for the same mesh N times.
+LocalMesh make_sphere(int recursion) {
+  constexpr int kKept = 6; // deeper levels (4^7 * 8 triangles and more) are built each time
+  if (recursion < 0 || recursion > kKept) return build_sphere(recursion);
+  static std::mutex lock;
+  static std::map<int, LocalMesh> built;
+  const std::lock_guard<std::mutex> hold(lock);
+  auto it = built.find(recursion);
+  if (it == built.end()) it = built.emplace(recursion, build_sphere(recursion)).first;
+  return it->second;
 }
 
 LocalMesh make_spheroid(int recursion, const glm::dvec3& radii) {
