@@ -5,6 +5,9 @@ usage: plot_results.py [--format png|svg|pdf] [--describe OUT.json] RESULTS_DIR
            the reproduce layout: kurc/, charles/, blazek/ (and blazek-quick/), fidelity.csv
        plot_results.py [--format ...] [--describe OUT.json] --sweep SWEEP.csv X Y OUT
            Y against the swept flag X, one line per combination of the other swept flags
+       --gantt REPORT.json OUT (repeatable) draws that space-time diagram (plot_gantt.py) in the
+           same interpreter, and --later calibration draws that part once standard input gives a
+           line: `zcube reproduce` draws all its plots with one process, while its calibration runs
 
 --describe writes what every figure shows (titles, axis labels and scales, legend entries, the
 number of series and of out-of-memory marks) as JSON: the tests read the plots from it.
@@ -526,21 +529,37 @@ def main(argv):
     p.add_argument("--units", help="zcube's unit tables as JSON ({kind: {unit: factor}})")
     p.add_argument("--describe", help="write what every figure shows as JSON")
     p.add_argument("--sweep", nargs=4, metavar=("CSV", "X", "Y", "OUT"))
+    p.add_argument("--gantt", nargs=2, action="append", default=[], metavar=("REPORT", "OUT"),
+                   help="also draw that report's space-time diagram (plot_gantt.py)")
+    p.add_argument("--later", action="append", default=[], choices=("calibration",),
+                   help="draw this part of RESULTS_DIR only once a line arrives on standard input "
+                   "(end of input: not at all)")
     p.add_argument("results", nargs="?")
     a = p.parse_args(argv)
     FORMAT = a.format
     if a.units:
         for table in json.loads(a.units).values():
             UNITS.update(table)
+    if a.gantt:
+        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+        import plot_gantt
+        for report, out in a.gantt:
+            plot_gantt.chart(report, out)
     if a.sweep:
         sweep(*a.sweep)
     elif a.results:
-        for part in (kurc, charles, blazek, fidelity, calibration):
-            part(a.results)
+        parts = {"kurc": kurc, "charles": charles, "blazek": blazek, "fidelity": fidelity,
+                 "calibration": calibration}
+        for name, part in parts.items():
+            if name not in a.later:
+                part(a.results)
         if os.path.isdir(os.path.join(a.results, "blazek-quick")):
             blazek(a.results, "blazek-quick")
-    else:
-        p.error("give RESULTS_DIR or --sweep")
+        if a.later and sys.stdin.readline():
+            for name in a.later:
+                parts[name](a.results)
+    elif not a.gantt:
+        p.error("give RESULTS_DIR, --sweep or --gantt")
     if a.describe:
         with open(a.describe, "w") as f:
             json.dump(FIGURES, f, indent=1)

@@ -1,9 +1,12 @@
 #include "repro/plot_script.hpp"
 
+#include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 
@@ -54,6 +57,59 @@ bool run_python_script(const std::string& root, const std::string& script,
   int status = 0;
   while (waitpid(pid, &status, 0) < 0)
     if (errno != EINTR) return false;
+  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+}
+
+BackgroundPlots::BackgroundPlots(const std::string& root, const std::vector<std::string>& args) {
+  std::vector<std::string> words = {python_interpreter(), root + "/scripts/plot_results.py",
+                                    "--units", unit_tables()};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (auto& w : words)
+    argv.push_back(w.data());
+  argv.push_back(nullptr);
+  int fds[2];
+  if (pipe2(fds, O_CLOEXEC) != 0) return;
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_adddup2(&fa, fds[0], 0);
+  pid_t pid = -1;
+  if (posix_spawnp(&pid, argv[0], &fa, nullptr, argv.data(), environ) == 0) pid_ = pid;
+  posix_spawn_file_actions_destroy(&fa);
+  close(fds[0]);
+  if (pid_ > 0)
+    to_script_ = fds[1];
+  else
+    close(fds[1]);
+}
+
+BackgroundPlots::~BackgroundPlots() {
+  wait();
+}
+
+void BackgroundPlots::go() {
+  if (to_script_ < 0) return;
+  const char line[] = "go\n";
+  // A script that has already died must not take zcube with it (SIGPIPE): wait() reports it.
+  struct sigaction ignore {}, old{};
+  ignore.sa_handler = SIG_IGN;
+  sigaction(SIGPIPE, &ignore, &old);
+  [[maybe_unused]] const ssize_t n = write(to_script_, line, sizeof line - 1);
+  sigaction(SIGPIPE, &old, nullptr);
+  close(to_script_);
+  to_script_ = -1;
+}
+
+bool BackgroundPlots::wait() {
+  if (to_script_ >= 0) {
+    close(to_script_); // end of input: the held-back plots are not drawn
+    to_script_ = -1;
+  }
+  if (pid_ <= 0) return false;
+  int status = 0;
+  while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+  }
+  pid_ = 0;
   return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 

@@ -19,4 +19,21 @@ bool run_plot_script(const std::string& root, const std::vector<std::string>& ar
 bool run_python_script(const std::string& root, const std::string& script,
                        const std::vector<std::string>& args);
 
+// scripts/plot_results.py (with --units, as run_plot_script) started in the background, its
+// standard input a pipe: the caller goes on while it draws, says go() when the plots the script
+// holds back (--later) can be drawn, and wait() tells whether it succeeded (the destructor waits).
+class BackgroundPlots {
+public:
+  BackgroundPlots(const std::string& root, const std::vector<std::string>& args);
+  ~BackgroundPlots();
+  BackgroundPlots(const BackgroundPlots&) = delete;
+  BackgroundPlots& operator=(const BackgroundPlots&) = delete;
+  void go();
+  bool wait();
+
+private:
+  int pid_ = -1;
+  int to_script_ = -1;
+};
+
 } // namespace zc

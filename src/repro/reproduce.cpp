@@ -1,11 +1,14 @@
 #include "repro/reproduce.hpp"
 #include "repro/simulate.hpp"
 
+#include <unistd.h>
+
 #include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -116,6 +119,37 @@ void name_plots_in(const std::string& readme, const std::string& format) {
   write_text(readme, s);
 }
 
+// A scratch directory removed with it.
+struct ScratchDir {
+  std::filesystem::path path;
+  explicit ScratchDir(std::filesystem::path p) : path(std::move(p)) {
+    std::filesystem::create_directories(path);
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+};
+
+// plot_results.py's arguments for the whole results directory: each Gantt chart from a report
+// file of its own (in `scratch`), the calibration's plot held back until it is written.
+std::vector<std::string>
+plot_arguments(const std::vector<std::pair<const nlohmann::json*, std::string>>& charts,
+               const ReproduceOptions& o, const ScratchDir& scratch) {
+  std::vector<std::string> args = {"--format", o.plot_format, "--later", "calibration"};
+  for (std::size_t i = 0; i < charts.size(); ++i) {
+    const auto& [report, path] = charts[i];
+    check_gantt_path(path);
+    const auto tmp = scratch.path / (std::to_string(i) + ".json");
+    std::ofstream(tmp) << report->dump();
+    args.insert(args.end(), {"--gantt", tmp.string(), path});
+  }
+  args.push_back(o.out);
+  return args;
+}
+
 } // namespace
 
 std::string plan_directory(const ReproduceOptions& o, const PaperPlan& p, std::string* note) {
@@ -210,6 +244,12 @@ int reproduce(const ReproduceOptions& o) {
     summaries += p.write(r, dir);
     if (!p.name.empty()) name_plots_in(dir + "/README.md", o.plot_format);
   }
+  // One interpreter draws every plot while the calibration runs: the Gantt charts and the tables'
+  // plots at once, the calibration's once it is written.
+  const ScratchDir plot_dir(std::filesystem::temp_directory_path() /
+                            ("zcube-" + std::to_string(getpid()) + "-plots"));
+  std::optional<BackgroundPlots> plots;
+  if (o.plots) plots.emplace(o.root, plot_arguments(charts, o, plot_dir));
   if (all && o.calibration) {
     CalibrationOptions c;
     c.root = o.root;
@@ -232,13 +272,11 @@ int reproduce(const ReproduceOptions& o) {
     name_plots_in(o.out + "/README.md", o.plot_format);
   }
 
-  if (o.plots) {
-    if (o.verbose && !charts.empty())
-      std::cerr << "reproduce: drawing " << charts.size() << " space-time diagrams\n";
-    if (!charts.empty() && !draw_gantts(charts, o.root))
-      std::cerr << "reproduce: Gantt charts not drawn (scripts/plot_gantt.py failed)\n";
-    if (o.verbose) std::cerr << "reproduce: drawing the plots\n";
-    if (!run_plot_script(o.root, {"--format", o.plot_format, o.out}))
+  if (plots) {
+    if (o.verbose)
+      std::cerr << "reproduce: drawing the plots and " << charts.size() << " space-time diagrams\n";
+    plots->go();
+    if (!plots->wait())
       std::cerr << "reproduce: plots not drawn (scripts/plot_results.py failed; it needs "
                    "python3-matplotlib, which scripts/setup.sh installs)\n";
   }
