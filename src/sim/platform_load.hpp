@@ -1,7 +1,7 @@
 #pragma once
 // Loads a platform file into the SimGrid engine and reads the machine model back from what
 // SimGrid loaded (platforms/README.md): channel bandwidth and latency from the links, start-up from
-// SMPI's receive overhead (smpi/or), CPU speed from the hosts, switching, memory and cycles from
+// SMPI's receive overhead (the nodes' smpi/or property), CPU speed from the hosts, switching, memory and cycles from
 // the machine zone's zcube.* properties. Every figure is checked (finite, in range) and a bad one
 // is an InputError naming the file and the attribute, before any simulation starts.
 #include <string>
@@ -25,8 +25,9 @@ struct PlatformModel {
   double os_resident = 0;      // per node: the operating system's share of `memory`
 };
 
-// Declares the configuration flags a zcube platform sets that SimGrid declares only under SMPI
-// (smpi/or), so that an s4u engine accepts the file; call before creating the engine.
+// Declares smpi/or, which SimGrid declares only under SMPI, so that zcube's engine still accepts
+// files written before the start-up became a host property (they set it in <config>); current
+// files need no declaration. Call before creating the engine.
 void declare_platform_flags();
 
 // Loads `xml` (the text of a built-in machine) or the file `path` into `e`; `label` names it in
