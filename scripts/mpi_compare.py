@@ -116,10 +116,10 @@ def main():
         f.write(
             f"""# The MPI backend on this machine against the simulator's prediction
 
-Written by `scripts/mpi_vs_model.sh` (one command, a few minutes) on {cond.get('host')}
-({cond.get('cores')} cores, {cond.get('date')}); phases timed on the **{cond.get('clock')}** clock
-(`ZCUBE_MPI_CLOCK`); load average (1, 5, 15 min) {cond.get('load_before')} before, {cond.get('load_after')}
-after. The method and what it shows: docs/machines.md, "Validation on a machine we can measure".
+Written by `scripts/mpi_vs_model.sh` (one command; {cond.get('elapsed_s', '?')} s here) on
+{cond.get('host')} ({cond.get('cores')} cores, {cond.get('date')}); phases timed on the
+**{cond.get('clock')}** clock (`ZCUBE_MPI_CLOCK`); load average (1, 5, 15 min)
+{cond.get('load_before')} before, {cond.get('load_after')} after (other programs shared the cores). The method and what it shows: docs/machines.md, "Validation on a machine we can measure".
 
 1. `mpirun -np 2 zcube probe` timed zcube's own loops and a ping-pong and wrote `cluster-P.xml`
    (`probe.json`: every loop, its counters, its time and the fit's prediction of it):

@@ -5,7 +5,7 @@
 #   2. predict: every workload simulated on that platform, before anything is measured;
 #   3. measure: every workload run RUNS times on the MPI backend (P = 1, 2, and 4 oversubscribed);
 #   4. compare: medians of the measured runs, their spread, phase by phase (scripts/mpi_compare.py).
-# Nothing of the measured runs enters the prediction. About 4 minutes on 2 cores.
+# Nothing of the measured runs enters the prediction. About 5 minutes on 2 idle cores.
 # usage: scripts/mpi_vs_model.sh [zcube=build/zcube] [out=results/mpi]
 #   RUNS=5 (runs per point), QUICK=1 (small workloads, one run each: tests/mpi),
 #   ZCUBE_MPI_CLOCK=cpu (time phases on the processes' CPU time, on a machine others load)
@@ -36,6 +36,7 @@ else
   seconds=0.2
 fi
 nodes=(1 2 4)
+start=$(date +%s)
 {
   echo "host=$(hostname)"
   echo "cores=$(nproc)"
@@ -79,7 +80,10 @@ PY
     done
   done
 done
-echo "load_after=$(cut -d' ' -f1-3 /proc/loadavg)" >>"$out/conditions.txt"
+{
+  echo "load_after=$(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "elapsed_s=$(($(date +%s) - start))"
+} >>"$out/conditions.txt"
 
 # 4. The comparison.
 python3 scripts/mpi_compare.py "$out" "$(nproc)"
