@@ -13,6 +13,7 @@
 
 #include "cli/command.hpp"
 #include "util/error.hpp"
+#include "util/error_text.hpp"
 
 namespace zc::cli {
 std::map<std::string, CommandInfo>& registry() {
@@ -35,6 +36,12 @@ static std::ostream& errors() {
   for (const char* k : {"OMPI_COMM_WORLD_RANK", "PMI_RANK", "PMIX_RANK"})
     if (const char* v = std::getenv(k); v && std::atoi(v) > 0) return quiet;
   return std::cerr;
+}
+
+// The one line printed for an error: a library's lines joined, echoed input cut to a readable
+// length.
+static std::string error_line(const char* what) {
+  return zc::shorten_echo(zc::one_line(what));
 }
 
 int main(int argc, char** argv) {
@@ -64,16 +71,16 @@ int main(int argc, char** argv) {
   try {
     return it->second.run(args);
   } catch (const zc::InputError& e) {
-    errors() << "zcube: error: " << e.what() << "\n";
+    errors() << "zcube: error: " << error_line(e.what()) << "\n";
     return 2;
   } catch (const zc::UsageError& e) {
-    errors() << "zcube: error: " << e.what() << "\n";
+    errors() << "zcube: error: " << error_line(e.what()) << "\n";
     return 2;
   } catch (const std::bad_alloc&) {
     errors() << "zcube: error: out of host memory\n";
     return 1;
   } catch (const std::exception& e) {
-    errors() << "zcube: error: " << e.what() << "\n";
+    errors() << "zcube: error: " << error_line(e.what()) << "\n";
     return 1;
   }
 }

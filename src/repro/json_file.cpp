@@ -3,10 +3,12 @@
 #include <fstream>
 
 #include "util/error.hpp"
+#include "util/input_file.hpp"
 
 namespace zc {
 
 nlohmann::json read_json_file(const std::string& path, const std::string& what) {
+  check_input_file(path);
   std::ifstream f(path);
   if (!f) throw InputError(path, 0, "cannot open " + what);
   try {

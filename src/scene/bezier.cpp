@@ -186,8 +186,10 @@ bool looks_like_bezier(const std::string& s) {
     if (nonempty.size() == 2) break;
   }
   if (nonempty.size() < 2 || !text::to_int(nonempty[0])) return false;
+  // A count, then a line of numbers (a patch's indices): a patch file, whose reader names what is
+  // wrong with it (a scene description line starts with a keyword).
   auto tok = text::split(nonempty[1], true);
-  return (tok.size() == 2 || tok.size() == 16) && text::to_int(tok[0]).has_value();
+  return tok.size() >= 2 && text::to_int(tok[0]).has_value();
 }
 
 std::shared_ptr<const std::vector<BezierPatch>> read_bezier_file(const std::string& path) {
@@ -198,7 +200,8 @@ std::shared_ptr<const std::vector<BezierPatch>> read_bezier_file(const std::stri
     auto it = cache.find(path);
     if (it != cache.end()) return it->second;
   }
-  auto p = std::make_shared<const std::vector<BezierPatch>>(parse_bezier(text::read_file(path), path));
+  auto p =
+      std::make_shared<const std::vector<BezierPatch>>(parse_bezier(text::read_file(path), path));
   std::lock_guard<std::mutex> lock(mu);
   cache.emplace(path, p);
   return p;

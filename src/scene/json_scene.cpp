@@ -14,6 +14,8 @@
 #include "scene/prng.hpp"
 #include "scene/text.hpp"
 #include "util/error.hpp"
+#include "util/image_size.hpp"
+#include "util/input_file.hpp"
 
 namespace zc {
 
@@ -117,9 +119,8 @@ void parse_object(Scene& scene, const Ctx& cx, const json& j, std::size_t index)
   if (k == "mesh" || k == "bezier") {
     if (!o.contains("file")) cx.fail(where, "'" + k + "' needs a 'file'");
     spec.file = text::join_path(cx.dir, cx.string(o["file"], where + ".file"));
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(spec.file, ec))
-      cx.fail(where + ".file", k + " file not found: " + spec.file);
+    if (const auto p = referenced_file_problem(k + " file", spec.file); !p.empty())
+      cx.fail(where + ".file", p);
   }
   if (o.contains("level"))
     spec.level = int(cx.integer(o["level"], where + ".level", 1, kMaxBezierLevel));
@@ -233,9 +234,9 @@ void load_json_scene(Scene& scene, const std::string& path) {
     if (!im.is_object()) cx.fail("image", "expected {\"width\": W, \"height\": H}");
     check_keys(cx, im, "image", {"width", "height"});
     if (im.contains("width"))
-      scene.width = int(cx.integer(im["width"], "image.width", 0, 1ll << 30));
+      scene.width = int(cx.integer(im["width"], "image.width", 1, kMaxImageSide));
     if (im.contains("height"))
-      scene.height = int(cx.integer(im["height"], "image.height", 0, 1ll << 30));
+      scene.height = int(cx.integer(im["height"], "image.height", 1, kMaxImageSide));
   }
   if (j.contains("background")) scene.background = cx.color(j["background"], "background");
   if (j.contains("ambient")) {
@@ -305,6 +306,7 @@ void load_json_scene(Scene& scene, const std::string& path) {
     if (!(cam.fovy_deg > 0 && cam.fovy_deg < 180))
       cx.fail("camera.fov", "must be in (0, 180) degrees");
     if (glm::length(cam.target - cam.eye) == 0) cx.fail("camera", "eye and target coincide");
+    if (glm::length(cam.up) == 0) cx.fail("camera.up", "the zero vector (no direction)");
     if (glm::length(glm::cross(cam.target - cam.eye, cam.up)) == 0)
       cx.fail("camera.up", "parallel to the view direction");
     if (cam.znear < 0 || cam.zfar < 0 || (cam.znear > 0 && cam.zfar > 0 && cam.zfar <= cam.znear))

@@ -12,6 +12,7 @@
 #include "scene/text.hpp"
 #include "util/error.hpp"
 #include "util/image_size.hpp"
+#include "util/input_file.hpp"
 
 namespace zc {
 
@@ -36,9 +37,7 @@ void bare_defaults(Scene& s) {
 } // namespace
 
 Scene load_scene(const std::string& path, const LoadOptions& opt) {
-  std::error_code ec;
-  if (!std::filesystem::exists(path, ec)) throw InputError(path, 0, "file not found");
-  if (std::filesystem::is_directory(path, ec)) throw InputError(path, 0, "is a directory");
+  check_input_file(path);
   Scene s;
   s.path = path;
   const std::string ext = text::lower(std::filesystem::path(path).extension().string());

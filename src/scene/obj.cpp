@@ -16,6 +16,7 @@
 #include "scene/obj_text.hpp"
 #include "scene/text.hpp"
 #include "util/error.hpp"
+#include "util/input_file.hpp"
 
 namespace zc {
 
@@ -55,8 +56,7 @@ void need_numbers(const std::string& file, const Line& l, std::size_t min_count,
                      "'" + std::string(tok[0]) + "' needs " + std::to_string(min_count) +
                          " numbers");
   for (std::size_t k = 1; k < tok.size() && k <= max_count; ++k)
-    if (!text::to_float(tok[k]))
-      throw InputError(file, l.number, "not a finite number: '" + std::string(tok[k]) + "'");
+    if (!text::to_float(tok[k])) throw InputError(file, l.number, text::float_problem(tok[k]));
 }
 
 struct TexRef {
@@ -69,9 +69,8 @@ struct MtlInfo {
 };
 
 MtlInfo check_mtl(const std::string& path, const std::string& obj_file, int obj_line) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw InputError(obj_file, obj_line, "material library not found: " + path);
+  if (const auto p = referenced_file_problem("material library", path); !p.empty())
+    throw InputError(obj_file, obj_line, p);
   const std::string s = text::read_file(path);
   MtlInfo info;
   std::string current;
@@ -94,8 +93,8 @@ MtlInfo check_mtl(const std::string& path, const std::string& obj_file, int obj_
     } else if (k == "map_Kd") {
       if (tok.size() < 2) throw InputError(path, l.number, "map_Kd needs a file name");
       std::string tex = text::join_path(dir, std::string(tok.back())); // options come first
-      if (!std::filesystem::is_regular_file(tex, ec))
-        throw InputError(path, l.number, "texture file not found: " + tex);
+      if (const auto p = referenced_file_problem("texture file", tex); !p.empty())
+        throw InputError(path, l.number, p);
       info.texture[current] = TexRef{tex, path, l.number};
     }
   });
@@ -106,8 +105,8 @@ MtlInfo check_mtl(const std::string& path, const std::string& obj_file, int obj_
 
 void append_obj(Scene& scene, const std::string& path, const ObjectTransform& xf,
                 std::uint32_t default_material, bool flip_winding) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec)) throw InputError(path, 0, "mesh file not found");
+  if (const auto p = input_file_problem(path); !p.empty())
+    throw InputError(path, 0, p == "not found" ? "mesh file not found" : p);
   std::string src = text::read_file(path);
   if (src.starts_with("\xEF\xBB\xBF")) src.erase(0, 3); // a UTF-8 byte-order mark
   std::map<std::string, TexRef> textures;               // by material name, from every mtllib

@@ -125,7 +125,7 @@ private:
     float v[3] = {0, 0, 0};
     for (std::size_t i = 0; i < std::min(n, max_count); ++i) {
       const auto f = text::to_float(t[i]);
-      if (!f) fail("not a finite number: '" + std::string(t[i]) + "'");
+      if (!f) fail(text::float_problem(t[i]));
       v[i] = *f;
     }
     to.insert(to.end(), v, v + keep);

@@ -26,6 +26,7 @@
 #include "scene/text.hpp"
 #include "util/error.hpp"
 #include "util/image_size.hpp"
+#include "util/input_file.hpp"
 
 #include <filesystem>
 #include <numbers>
@@ -225,9 +226,9 @@ void load_sdl_scene(Scene& scene, const std::string& path) {
       }
     }
     if ((k == "bezier" || k == "mesh") && spec.file.empty()) p.fail(k + " needs a file");
-    std::error_code ec;
-    if (!spec.file.empty() && !std::filesystem::is_regular_file(spec.file, ec))
-      p.fail(k + " file not found: " + spec.file);
+    if (const auto bad = referenced_file_problem(k + " file", spec.file);
+        !spec.file.empty() && !bad.empty())
+      p.fail(bad);
     SplitMix64 g(mix_seed(seed, std::uint64_t(ob.line)));
     for (long long c = 0; c < num; ++c) {
       ObjectSpec copy = spec;

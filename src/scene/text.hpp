@@ -13,6 +13,9 @@ std::string_view trim(std::string_view s);
 std::vector<std::string_view> split(std::string_view s, bool commas = false);
 std::optional<double> to_double(std::string_view s); // finite values only
 std::optional<float> to_float(std::string_view s);   // finite in float range only
+// Why `s` is not a float to_float takes ("not a number: 'x'", "out of the range of a float: ..."),
+// empty when it is one.
+std::string float_problem(std::string_view s);
 std::optional<long long> to_int(std::string_view s);
 std::string fmt(double v); // shortest text that parses back to exactly v
 std::string fmt(float v);

@@ -5,13 +5,13 @@
 #include "scene/loaders.hpp"
 #include "util/error.hpp"
 #include "util/image_module.hpp"
+#include "util/input_file.hpp"
 
 namespace zc {
 
 Texture load_texture(const std::string& path, const std::string& ref_file, int ref_line) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw InputError(ref_file, ref_line, "texture file not found: " + path);
+  if (const auto p = referenced_file_problem("texture file", path); !p.empty())
+    throw InputError(ref_file, ref_line, p);
   image_module::Pixels px;
   std::string err;
   switch (image_module::read(path, px, err)) {

@@ -19,8 +19,11 @@
 
 #include "machine/platform_xml.hpp"
 #include "machine/units.hpp"
+#include "sim/platform_routes.hpp"
 #include "sim/simulation.hpp"
 #include "util/error.hpp"
+#include "util/error_text.hpp"
+#include "util/input_file.hpp"
 
 namespace zc {
 
@@ -108,11 +111,54 @@ void check_zones(const std::string& xml, const std::string& label) {
   }
 }
 
+// Every figure of a zcube platform carries its unit: SimGrid reads a bare number as base units
+// (bw="2.8" is 2.8 bytes per second, a deprecated form it warns about on a log zcube silences).
+void check_units(const std::string& xml, const std::string& label) {
+  static const std::regex tag(R"(<(host|link|cluster|peer|backbone)\b[^>]*>)");
+  static const std::regex attr(
+      R"re(\b(speed|bandwidth|latency|bw|lat|bb_bw|bb_lat|loopback_bw|loopback_lat|limiter_link)\s*=\s*(?:"([^"]*)"|'([^']*)'))re");
+  static const std::regex bare(R"(\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*)");
+  for (std::sregex_iterator t(xml.begin(), xml.end(), tag), end; t != end; ++t) {
+    const std::string text = t->str();
+    for (std::sregex_iterator m(text.begin(), text.end(), attr); m != end; ++m) {
+      const std::string value = (*m)[2].matched ? (*m)[2].str() : (*m)[3].str();
+      for (const std::string& v : split(value, ',')) // a host's speeds, one per power state
+        if (std::regex_match(v, bare))
+          throw InputError(label, 0,
+                           (*t)[1].str() + " " + (*m)[1].str() + "=\"" + value +
+                               "\": a number without its unit (e.g. 2.8MBps, 10us, 16Mf; "
+                               "platforms/README.md)");
+    }
+  }
+}
+
+// The zcube.* properties of the machine zone: each one zcube reads, and each once (SimGrid keeps
+// the first of two alike; an unknown one, a misspelling, would leave its figure unset).
+void check_zcube_properties(const std::string& xml, const std::string& label) {
+  static const std::regex prop(
+      R"re(<prop\b[^>]*\bid\s*=\s*(?:"(zcube\.[^"]*)"|'(zcube\.[^']*)'))re");
+  std::set<std::string> known = {"zcube.machine", "zcube.topology", "zcube.switching",
+                                 "zcube.node_memory", "zcube.os_resident"};
+  CostTable cycles;
+  for (auto& [id, v] : cycles.fields())
+    known.insert("zcube.cycles." + id.substr(5));
+  std::set<std::string> seen;
+  for (std::sregex_iterator m(xml.begin(), xml.end(), prop), end; m != end; ++m) {
+    const std::string id = (*m)[1].matched ? (*m)[1].str() : (*m)[2].str();
+    if (!known.count(id))
+      throw InputError(label, 0,
+                       "property '" + id +
+                           "': not one zcube reads (platforms/README.md lists "
+                           "them)");
+    if (!seen.insert(id).second) throw InputError(label, 0, "property '" + id + "' is given twice");
+  }
+}
+
 void load(sg::Engine& e, const std::string& path, const std::string& label) {
   try {
     e.load_platform(path);
   } catch (const std::exception& ex) {
-    throw InputError(label, 0, std::string("cannot load platform: ") + ex.what());
+    throw InputError(label, 0, "cannot load platform: " + one_line(ex.what()));
   }
 }
 
@@ -137,13 +183,16 @@ void load_platform_text(sg::Engine& e, const std::string& xml, const std::string
 }
 
 void load_platform_file(sg::Engine& e, const std::string& path) {
-  if (!std::filesystem::is_regular_file(path)) throw InputError(path, 0, "file not found");
+  check_input_file(path);
   std::ifstream f(path);
   std::stringstream text;
   text << f.rdbuf();
   if (!f) throw InputError(path, 0, "cannot read the file");
   check_clusters(text.str(), path);
   check_zones(text.str(), path);
+  check_units(text.str(), path);
+  check_zcube_properties(text.str(), path);
+  check_declared_routes(text.str(), path);
   load(e, path, path);
 }
 
@@ -230,62 +279,115 @@ int count_nodes(const sg::Engine& e, const std::string& where) {
   return P;
 }
 
-// The file's routes must be the topology's: hop counts from node0 (e-cube on the cube).
+// The channels of SimGrid's route from `a` to `b` (a duplex link rides under a channel: it adds no
+// hop); the route's links in `links`.
+int channels_on_route(const sg::Host* a, const sg::Host* b, std::vector<sg::Link*>& links,
+                      const std::string& where) {
+  links.clear();
+  try {
+    a->route_to(b, links, nullptr);
+  } catch (const std::exception& ex) {
+    throw InputError(
+        where, 0, "route " + a->get_name() + " -> " + b->get_name() + ": " + one_line(ex.what()));
+  }
+  return int(std::count_if(links.begin(), links.end(), [](const sg::Link* l) {
+    return !is_duplex_link(l->get_name()) && l->get_name().find("loopback") == std::string::npos;
+  }));
+}
+
+// The file's routes must be the topology's: hop counts from node0 and back (e-cube on the cube),
+// and the host link alone between node0 and the host, each way. The declared routes were checked
+// before SimGrid computed any (sim/platform_routes.hpp), so every route exists.
 void check_routes(const sg::Engine& e, const PlatformModel& m, const std::string& where) {
-  const sg::Host* from = e.host_by_name(node_host_name(0));
+  const sg::Host* node0 = e.host_by_name(node_host_name(0));
+  std::vector<sg::Link*> links;
   for (int r = 1; r < m.nodes; ++r) {
-    std::vector<sg::Link*> links;
-    from->route_to(e.host_by_name(node_host_name(r)), links, nullptr);
-    // A duplex link rides under a channel: it adds no hop.
-    const auto channels = std::count_if(links.begin(), links.end(), [](const sg::Link* l) {
-      return !is_duplex_link(l->get_name());
+    const sg::Host* other = e.host_by_name(node_host_name(r));
+    const int want = hops(m.topology, m.nodes, 0, r);
+    for (const bool out : {true, false}) {
+      const int channels = out ? channels_on_route(node0, other, links, where)
+                               : channels_on_route(other, node0, links, where);
+      if (channels != want)
+        throw InputError(
+            where, 0,
+            "route " + (out ? "node0 -> " + node_host_name(r) : node_host_name(r) + " -> node0") +
+                " has " + std::to_string(channels) + " channels, a " + topology_name(m.topology) +
+                " of " + std::to_string(m.nodes) + " nodes has " + std::to_string(want));
+    }
+  }
+  const sg::Host* host = e.host_by_name(kHostComputerName);
+  for (const bool up : {true, false}) {
+    if (up)
+      channels_on_route(node0, host, links, where);
+    else
+      channels_on_route(host, node0, links, where);
+    const std::string want = up ? kHostUpLink : kHostDownLink;
+    std::erase_if(links, [](const sg::Link* l) {
+      return l->get_name().find("loopback") != std::string::npos;
     });
-    if (int(channels) != hops(m.topology, m.nodes, 0, r))
+    if (links.size() != 1 || links[0]->get_name() != want)
       throw InputError(where, 0,
-                       "route node0 -> " + node_host_name(r) + " has " + std::to_string(channels) +
-                           " channels, a " + topology_name(m.topology) + " of " +
-                           std::to_string(m.nodes) + " nodes has " +
-                           std::to_string(hops(m.topology, m.nodes, 0, r)));
+                       std::string("route ") + (up ? "node0 -> " : "") + kHostComputerName +
+                           (up ? "" : " -> node0") + ": expected the link '" + want +
+                           "' alone (the host is linked to node 0)");
   }
 }
 
-// The duplex links' two-way total: all alike, no latency of their own.
-void read_duplex_link(const sg::Link* l, const std::string& where, NetworkParams& n) {
-  const std::string what = "link '" + l->get_name() + "' ";
-  const double bw = checked(l->get_bandwidth(), where, what + "bandwidth", 0, true);
-  if (l->get_latency() != 0)
-    throw InputError(where, 0, what + "latency: a duplex link adds no latency (0s)");
-  if (n.both_ways_Bps != 0 && bw != n.both_ways_Bps)
-    throw InputError(where, 0, what + "differs from the others: zcube models identical channels");
-  n.both_ways_Bps = bw;
+struct LinkFigures {
+  std::string name;
+  double bw, lat;
+  bool operator==(const LinkFigures& o) const { return bw == o.bw && lat == o.lat; }
+};
+
+// zcube models identical channels: the figures most links of a kind share, and the first link
+// that differs from them is the one named (an edit of one link names that link).
+LinkFigures common_figures(const std::vector<LinkFigures>& links, const std::string& kind,
+                           const std::string& where) {
+  std::size_t best = 0, best_count = 0;
+  for (std::size_t i = 0; i < links.size(); ++i) {
+    const auto count = std::size_t(std::count(links.begin(), links.end(), links[i]));
+    if (count > best_count) best = i, best_count = count;
+  }
+  for (const auto& l : links)
+    if (!(l == links[best]))
+      throw InputError(where, 0,
+                       "link '" + l.name + "' (bandwidth " + format_double(l.bw) +
+                           " Bps, latency " + format_double(l.lat) + " s) differs from the other " +
+                           kind + " (" + format_double(links[best].bw) + " Bps, " +
+                           format_double(links[best].lat) + " s): zcube models identical channels");
+  return links[best];
 }
 
 void read_links(const sg::Engine& e, const std::string& where, NetworkParams& n) {
-  bool channel_seen = false;
+  std::vector<LinkFigures> channels, host, duplex;
   for (const sg::Link* l : e.get_all_links()) {
     const std::string name = l->get_name();
     if (name == "__loopback__") continue;
-    if (is_duplex_link(name)) {
-      read_duplex_link(l, where, n);
+    const std::string what = "link '" + name + "' ";
+    if (is_duplex_link(name)) { // the two-way total: no latency of its own
+      const double bw = checked(l->get_bandwidth(), where, what + "bandwidth", 0, true);
+      if (l->get_latency() != 0)
+        throw InputError(where, 0, what + "latency: a duplex link adds no latency (0s)");
+      duplex.push_back({name, bw, 0});
       continue;
     }
-    const bool host = name == kHostUpLink || name == kHostDownLink;
-    const std::string what = "link '" + name + "' ";
     const double bw = clock_safe_bandwidth(
         checked(l->get_bandwidth(), where, what + "bandwidth", 0, true), where, what + "bandwidth");
     const double lat = clock_safe_delay(checked(l->get_latency(), where, what + "latency"), where,
                                         what + "latency");
-    double& per_byte = host ? n.host_per_byte_s : n.per_byte_s;
-    double& latency = host ? n.host_startup_s : n.per_hop_s;
-    const bool first = host ? per_byte == 0 : !channel_seen;
-    if (!first && (1.0 / bw != per_byte || lat != latency))
-      throw InputError(where, 0, what + "differs from the others: zcube models identical channels");
-    per_byte = 1.0 / bw;
-    latency = lat;
-    channel_seen |= !host;
+    (name == kHostUpLink || name == kHostDownLink ? host : channels).push_back({name, bw, lat});
   }
-  if (n.host_per_byte_s == 0)
+  if (host.empty())
     throw InputError(where, 0, std::string("link '") + kHostUpLink + "' is missing");
+  const LinkFigures h = common_figures(host, "host link", where);
+  n.host_per_byte_s = 1.0 / h.bw;
+  n.host_startup_s = h.lat;
+  if (!channels.empty()) {
+    const LinkFigures c = common_figures(channels, "channels", where);
+    n.per_byte_s = 1.0 / c.bw;
+    n.per_hop_s = c.lat;
+  }
+  if (!duplex.empty()) n.both_ways_Bps = common_figures(duplex, "duplex links", where).bw;
 }
 
 // SMPI's receive overhead as SMPI finds it: the host's smpi/or property, else the global setting
@@ -322,7 +424,10 @@ PlatformModel read_platform(const sg::Engine& e, const std::string& where) {
   if (!z->get_property("zcube.machine"))
     throw InputError(where, 0, "not a zcube platform (no zcube.machine property on its zone)");
   m.machine = zone_prop(z, "zcube.machine", where);
-  m.topology = parse_topology(zone_prop(z, "zcube.topology", where));
+  const std::string topology = zone_prop(z, "zcube.topology", where);
+  if (topology != "cube" && topology != "hypercube" && topology != "ring")
+    throw InputError(where, 0, "zcube.topology = '" + topology + "': expected cube or ring");
+  m.topology = parse_topology(topology);
   const std::string sw = zone_prop(z, "zcube.switching", where);
   if (sw != "circuit" && sw != "store-and-forward")
     throw InputError(where, 0,

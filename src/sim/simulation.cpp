@@ -23,6 +23,7 @@
 #include "sim/platform_load.hpp"
 #include "sim/sim_context.hpp"
 #include "util/error.hpp"
+#include "util/input_file.hpp"
 
 namespace zc {
 
@@ -80,8 +81,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   const bool is_file = cfg.machine.size() > 4 && cfg.machine.ends_with(".xml");
   std::string builtin_xml;
   if (is_file) {
-    if (!std::filesystem::is_regular_file(cfg.machine))
-      throw InputError(cfg.machine, 0, "file not found");
+    check_input_file(cfg.machine);
     platform_label = cfg.machine;
   } else {
     check_node_count(cfg.topology, cfg.nodes);

@@ -57,6 +57,10 @@ for f in "$data"/bad_platform/*.xml; do
   nodes_*) attr='radical\|topo_parameters\|zcube.topology' ;;
   switching_*) attr='zcube.switching' ;;
   routing_*) attr='routing' ;;
+  routes_*) attr='route' ;;
+  property_*) attr='property' ;;
+  topology_*) attr='zcube.topology' ;;
+  channel_*) attr="link 'ch-0-1'" ;;
   *) attr='.' ;;
   esac
   check "platform $name" "$name: .*\($attr\)" "$zcube" run --machine "$f" --algorithm sequential --size 8x8

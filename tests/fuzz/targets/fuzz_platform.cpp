@@ -1,10 +1,13 @@
 // libFuzzer target: platform files, the way zcube run --machine FILE.xml reads them
-// (src/sim/platform_load.cpp): zcube's cluster checks, SimGrid's parser, then read_platform's
-// checks of every figure. SimGrid allows one engine per process and aborts the process on some
-// input it rejects (xbt_assert), so every input is loaded in a forked child; a child that dies
-// (signal, sanitizer report) or throws anything but InputError/UsageError is a finding, reported
-// by aborting the parent. The child copies its coverage counters back before it exits, so
-// libFuzzer's guidance sees the parser and the checks as if they had run in-process.
+// (src/sim/platform_load.cpp): zcube's cluster, unit, property and route checks, SimGrid's parser,
+// then read_platform's checks of every figure and route. An input may start with lines of SimGrid
+// settings ("--cfg=name:value", "--log=..."), checked as zcube run checks them
+// (sim/simgrid_args.hpp) and, when accepted, given to the engine that loads the file. SimGrid
+// allows one engine per process and aborts the process on some input it rejects (xbt_assert), so
+// every input is loaded in a forked child; a child that dies (signal, sanitizer report) or throws
+// anything but InputError/UsageError is a finding, reported by aborting the parent. The child
+// copies its coverage counters back before it exits, so libFuzzer's guidance sees the parser and
+// the checks as if they had run in-process.
 #include <elf.h>
 #include <fcntl.h>
 #include <link.h>
@@ -21,6 +24,7 @@
 
 #include "fuzz_common.hpp"
 #include "sim/platform_load.hpp"
+#include "sim/simgrid_args.hpp"
 
 namespace {
 
@@ -70,15 +74,31 @@ std::uint8_t* shared_counters() {
   return p;
 }
 
-[[noreturn]] void load_in_child(const std::string& path) {
+// The leading "--cfg=..." and "--log=..." lines of an input, and the rest (the platform).
+std::vector<std::string> split_settings(std::string& text) {
+  std::vector<std::string> settings;
+  while (text.starts_with("--cfg=") || text.starts_with("--log=")) {
+    const auto nl = text.find('\n');
+    settings.push_back(text.substr(0, nl));
+    text = nl == std::string::npos ? "" : text.substr(nl + 1);
+  }
+  return settings;
+}
+
+[[noreturn]] void load_in_child(const std::string& path, const std::vector<std::string>& settings) {
   const int null = open("/dev/null", O_WRONLY);
   dup2(null, STDOUT_FILENO);
   std::vector<std::string> args = {"fuzz_platform", "--log=root.thres:critical"};
   std::vector<char*> argv;
+  int rc = 0;
+  try {
+    zc::check_simgrid_args(settings); // what zcube run refuses never reaches the engine
+    args.insert(args.end(), settings.begin(), settings.end());
+  } catch (const zc::UsageError&) {
+  }
   for (auto& a : args)
     argv.push_back(a.data());
   int argc = int(argv.size());
-  int rc = 0;
   try {
     zc::declare_platform_flags();
     simgrid::s4u::Engine e(&argc, argv.data());
@@ -97,12 +117,15 @@ std::uint8_t* shared_counters() {
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  const std::string path = zc::fuzz::write_input("in.xml", data, size);
+  std::string text(reinterpret_cast<const char*>(data), size);
+  const std::vector<std::string> settings = split_settings(text);
+  const std::string path = zc::fuzz::write_input(
+      "in.xml", reinterpret_cast<const std::uint8_t*>(text.data()), text.size());
   std::uint8_t* shared = shared_counters();
   std::memset(shared, 0, counters_size());
   const pid_t pid = fork();
   if (pid < 0) std::abort();
-  if (pid == 0) load_in_child(path);
+  if (pid == 0) load_in_child(path, settings);
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
