@@ -8,9 +8,11 @@
 #include "cli/parse.hpp"
 #include "cli/paths.hpp"
 #include "cli/sim_options.hpp"
+#include "machine/machine.hpp"
 #include "repro/calibrate.hpp"
 #include "run/batch.hpp"
 #include "util/error.hpp"
+#include "util/output_file.hpp"
 
 namespace zc::cli {
 
@@ -45,6 +47,19 @@ static int cmd_calibrate(std::vector<std::string> args) {
   if (int rc = parse(app, args); rc >= 0) return rc;
   simgrid.apply();
   o.cross_validate = !no_crossval;
+  // Checked before the fit (minutes), not found wanting after it.
+  if (o.max_iterations < 1)
+    throw UsageError("--max-iterations " + std::to_string(o.max_iterations) +
+                     ": expected at least 1 fixed-point step");
+  for (const auto& g : o.fixed_groups) {
+    std::string names;
+    bool known = false;
+    for (const auto& cg : cost_groups()) {
+      names += (names.empty() ? "" : ", ") + cg.name;
+      known = known || cg.name == g;
+    }
+    if (!known) throw UsageError("--fix " + g + ": not a cost group (" + names + ")");
+  }
   // Checked before the fit (minutes): a calibration is never replaced without being told.
   if (std::filesystem::exists(out + "/fit.json") && !overwrite)
     throw UsageError("--out " + out +
@@ -70,7 +85,7 @@ static int cmd_calibrate(std::vector<std::string> args) {
   std::cout << "wrote " << out << "/\n";
   if (write) {
     const std::string h = o.root + "/src/machine/calibrated_costs.hpp";
-    std::ofstream(h) << calibrated_costs_header(fit);
+    write_text_file(h, calibrated_costs_header(fit));
     std::cout << "wrote " << h << ": rebuild\n";
   }
   return 0;

@@ -10,6 +10,7 @@
 #include "repro/table.hpp"
 #include "run/batch.hpp"
 #include "util/error.hpp"
+#include "util/output_file.hpp"
 
 namespace zc::cli {
 
@@ -42,6 +43,10 @@ static int cmd_regress(std::vector<std::string> args) {
     throw UsageError("regress: give --against DIR (compare) and/or --write DIR (record)");
   if (!with.empty() && against.empty()) throw UsageError("regress: --with needs --against");
 
+  // Every input read and every output checked before any run (16 simulations).
+  const auto before =
+      against.empty() ? std::map<std::string, nlohmann::json>{} : read_report_dir(against);
+  if (!write.empty()) prepare_output_dir(write, "--write");
   std::map<std::string, nlohmann::json> now;
   if (!with.empty()) {
     now = read_report_dir(with);
@@ -55,7 +60,6 @@ static int cmd_regress(std::vector<std::string> args) {
     }
     now = run_regress(read_regress_runs(runs_file), root, jobs, set);
   }
-  const auto before = against.empty() ? decltype(now){} : read_report_dir(against);
   if (!write.empty()) {
     write_report_dir(now, write);
     std::cout << "regress: wrote " << now.size() << " reports to " << write << "/\n";

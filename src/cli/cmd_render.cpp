@@ -35,6 +35,9 @@ static int cmd_render(std::vector<std::string> args) {
   scene_path = data_file(scene_path);
   if (image.empty()) image = std::filesystem::path(scene_path).stem().string() + ".png";
 
+  check_output_paths({{"--image", image}, {"--depth", depth}, {"--report", report}});
+  check_image_path(image, "--image");
+  check_image_path(depth, "--depth");
   LoadOptions lo;
   if (!size.empty()) {
     const ImageSize s = parse_image_size(size);

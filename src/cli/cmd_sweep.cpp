@@ -15,6 +15,7 @@
 #include "repro/sweep.hpp"
 #include "run/batch.hpp"
 #include "util/error.hpp"
+#include "util/output_file.hpp"
 #ifdef ZCUBE_HAVE_MPI
 #include <optional>
 
@@ -35,6 +36,51 @@ static void check_quantities(const std::vector<SweepAxis>& axes) {
         parse_bandwidth(v, "--" + ax.flag, Unit::Required);
       if (ax.flag == "memory") parse_bytes(v, "--memory", Unit::Required);
     }
+}
+
+// The phases the algorithms time (their ctx.phase names; tests/cli/hostile.sh checks that this
+// list holds every one in src/algo), for --plot-y phase:<name> before anything runs.
+static const std::vector<std::string> kPhases = {"broadcast",
+                                                 "distribute",
+                                                 "load_estimation",
+                                                 "local_zbuffer",
+                                                 "merge",
+                                                 "multibroadcast_uvs",
+                                                 "multibroadcast_vertices",
+                                                 "multireduce_load",
+                                                 "multiscatter_triangles",
+                                                 "output",
+                                                 "partition",
+                                                 "paste",
+                                                 "pixel_merging",
+                                                 "project",
+                                                 "render",
+                                                 "request_vertices",
+                                                 "scatter_triangles",
+                                                 "scatter_vertices",
+                                                 "span_list_creation",
+                                                 "zbuffer"};
+
+// --plot-x is a swept flag and --plot-y a column the sweep can have: checked before any point
+// runs, not after all of them.
+static void check_plot_axes(const std::vector<SweepAxis>& axes, const std::string& plot_x,
+                            const std::string& plot_y, bool no_plot) {
+  if (no_plot) return;
+  std::string swept;
+  bool found = plot_x.empty();
+  for (const auto& ax : axes) {
+    swept += (swept.empty() ? "" : ", ") + ax.flag;
+    found = found || ax.flag == plot_x;
+  }
+  if (!found)
+    throw UsageError("--plot-x " + plot_x + ": not a swept flag (this sweep gives " + swept + ")");
+  if (plot_y.starts_with("phase:") &&
+      std::find(kPhases.begin(), kPhases.end(), plot_y.substr(6)) == kPhases.end()) {
+    std::string names;
+    for (const auto& p : kPhases)
+      names += (names.empty() ? "" : ", ") + p;
+    throw UsageError("--plot-y " + plot_y + ": no algorithm has that phase (" + names + ")");
+  }
 }
 
 static int cmd_sweep(std::vector<std::string> args) {
@@ -85,6 +131,7 @@ static int cmd_sweep(std::vector<std::string> args) {
         plot_x = ax.flag;
         break;
       }
+  check_plot_axes(axes, plot_x, plot_y, no_plot);
   auto points = expand_sweep(axes, default_scene_path());
   if (baseline) add_baselines(axes, points, default_scene_path());
   const auto& known = sweep_value_columns();
@@ -137,7 +184,7 @@ static int cmd_sweep(std::vector<std::string> args) {
   write_sweep(axes, rows, reports, out);
   int failed = 0;
   for (const auto& r : rows)
-    if (r["status"] == "error") {
+    if (r["status"] != "ok") { // an error, out of memory, a deadlock
       ++failed;
       std::cerr << "sweep: point " << r["index"] << " failed: " << r["error"].get<std::string>()
                 << "\n";
@@ -152,8 +199,14 @@ static int cmd_sweep(std::vector<std::string> args) {
       std::cerr << "zcube: error: --plot-y " << plot_y << ": no point has that column\n";
       return 2;
     }
-    drawn = run_plot_script(source_root(), {"--format", plot_format, "--sweep", out + "/sweep.csv",
-                                            plot_x, plot_y, out + "/" + plot});
+    try { // to a temporary file renamed into place (util/output_file.hpp)
+      write_file_atomically(out + "/" + plot, [&](const std::string& tmp) {
+        return run_plot_script(source_root(), {"--format", plot_format, "--sweep",
+                                               out + "/sweep.csv", plot_x, plot_y, tmp});
+      });
+      drawn = true;
+    } catch (const std::runtime_error&) { // the script said why on stderr
+    }
     if (!drawn) std::cerr << "sweep: plot not drawn\n";
   }
   std::cout << "sweep: " << rows.size() << " points, " << failed << " failed; wrote " << out

@@ -21,6 +21,13 @@ inline int parse(CLI::App& app, std::vector<std::string> args) {
   } catch (const CLI::ParseError& e) {
     throw UsageError(app.get_name() + ": " + e.what());
   }
+  // An empty value is a mistake (an unset shell variable), not "flag not given".
+  for (const CLI::Option* o : app.get_options())
+    if (o->count() > 0 && o->get_items_expected_min() > 0)
+      for (const auto& r : o->results())
+        if (r.empty())
+          throw UsageError(o->get_name() + " '': an empty value (leave the flag out for its "
+                                           "default)");
   return -1;
 }
 

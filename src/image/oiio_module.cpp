@@ -30,6 +30,9 @@ int zcube_image_write(const char* path, int w, int h, int channels, int is_float
   auto out = OIIO::ImageOutput::create(path);
   if (!out) return fail(1, OIIO::geterror(), err, errlen);
   OIIO::ImageSpec spec(w, h, channels, type);
+  // No capture date (OpenEXR's capDate is the write time unless given): the same pixels give the
+  // same bytes.
+  spec.attribute("DateTime", "");
   if (!out->open(path, spec) || !out->write_image(type, data) || !out->close())
     return fail(1, out->geterror(), err, errlen);
   return 0;

@@ -8,6 +8,7 @@
 #include "machine/cpu_model.hpp"
 #include "machine/units.hpp"
 #include "repro/calibrate.hpp"
+#include "util/output_file.hpp"
 
 namespace zc {
 
@@ -67,40 +68,45 @@ std::string plain_pct(double v) {
 }
 
 void write_csvs(const nlohmann::json& fit, const std::string& dir) {
-  std::ofstream t(dir + "/targets.csv");
+  std::ostringstream t;
   t << "target,machine,quantity,paper,prior,fitted,rel_error_prior,rel_error_fitted\n";
   for (const auto& r : fit["targets"])
     t << r["id"].get<std::string>() << "," << r["machine"].get<std::string>() << ","
       << r["quantity"].get<std::string>() << "," << num(r["paper"]) << "," << num(r["prior"]) << ","
       << num(r["fitted"]) << "," << num(r["rel_error_prior"]) << "," << num(r["rel_error_fitted"])
       << "\n";
-  std::ofstream p(dir + "/plausibility.csv");
+  write_text_file(dir + "/targets.csv", t.str());
+  std::ostringstream p;
   p << "cpu,operation,physical_cycles,fitted_cycles,ratio\n";
   for (const auto& r : fit["plausibility"])
     p << r["cpu"].get<std::string>() << "," << r["operation"].get<std::string>() << ","
       << num(r["physical_cycles"]) << "," << num(r["fitted_cycles"]) << "," << num(r["ratio"])
       << "\n";
-  std::ofstream c(dir + "/charles_prediction.csv");
+  write_text_file(dir + "/plausibility.csv", p.str());
+  std::ostringstream c;
   c << "target,nodes,paper,predicted,rel_error,predicted_physical,rel_error_physical\n";
   for (const auto& r : fit["charles"])
     c << r["id"].get<std::string>() << "," << r["nodes"].get<int>() << "," << num(r["paper"]) << ","
       << num(r["predicted"]) << "," << num(r["rel_error"]) << "," << num(r["predicted_physical"])
       << "," << num(r["rel_error_physical"]) << "\n";
+  write_text_file(dir + "/charles_prediction.csv", c.str());
   if (fit.contains("selection")) {
-    std::ofstream sel(dir + "/selection.csv");
+    std::ostringstream sel;
     sel << "fixed_groups,free_parameters,median_abs_rel_error,rms_rel_error\n";
     for (const auto& r : fit["selection"])
       sel << "\"" << r["fixed_groups"].get<std::string>() << "\"," << r["free_parameters"] << ","
           << num(r["median_abs_rel_error"]) << "," << num(r["rms_rel_error"]) << "\n";
+    write_text_file(dir + "/selection.csv", sel.str());
   }
   if (!fit.contains("crossval")) return;
-  std::ofstream x(dir + "/crossval.csv");
+  std::ostringstream x;
   x << "fold,target,paper_ms,predicted_ms,rel_error\n";
   for (const auto& f : fit["crossval"]["folds"])
     for (const auto& r : f["targets"])
       x << f["fold"].get<std::string>() << "," << r["id"].get<std::string>() << ","
         << num(r["paper_ms"]) << "," << num(r["predicted_ms"]) << "," << num(r["rel_error"])
         << "\n";
+  write_text_file(dir + "/crossval.csv", x.str());
 }
 
 void readme_method(std::ostream& md, const nlohmann::json& fit) {
@@ -238,15 +244,16 @@ void readme_targets(std::ostream& md, const nlohmann::json& fit) {
 } // namespace
 
 void write_calibration_results(const nlohmann::json& fit, const std::string& dir) {
-  std::filesystem::create_directories(dir);
-  std::ofstream(dir + "/fit.json") << fit.dump(2) << "\n";
+  prepare_output_dir(dir);
+  write_text_file(dir + "/fit.json", fit.dump(2) + "\n");
   write_csvs(fit, dir);
-  std::ofstream md(dir + "/README.md");
+  std::ostringstream md;
   readme_method(md, fit);
   readme_fit(md, fit);
   readme_validation(md, fit);
   readme_selection(md, fit);
   readme_targets(md, fit);
+  write_text_file(dir + "/README.md", md.str());
 }
 
 } // namespace zc

@@ -4,9 +4,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include "repro/plot_script.hpp"
 #include "util/error.hpp"
+#include "util/output_file.hpp"
 
 namespace zc {
 
@@ -34,7 +36,21 @@ bool draw_gantts(const std::vector<std::pair<const nlohmann::json*, std::string>
     args.push_back(tmp.string());
     args.push_back(path);
   }
-  const bool ok = run_python_script(root, "scripts/plot_gantt.py", args);
+  // Each chart is drawn to a temporary file beside it and renamed into place once every chart is
+  // drawn (util/output_file.hpp): a failed drawing leaves no partial picture.
+  std::function<bool(std::size_t)> draw_from = [&](std::size_t i) {
+    if (2 * i == args.size()) return run_python_script(root, "scripts/plot_gantt.py", args);
+    write_file_atomically(args[2 * i + 1], [&](const std::string& tmp) {
+      args[2 * i + 1] = tmp;
+      return draw_from(i + 1);
+    });
+    return true;
+  };
+  bool ok = false;
+  try {
+    ok = draw_from(0);
+  } catch (const std::runtime_error&) { // the script said why on stderr
+  }
   std::filesystem::remove_all(dir);
   return ok;
 }

@@ -1,9 +1,14 @@
 #include "repro/regress.hpp"
 #include "repro/simulate.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <regex>
 #include <set>
 
 #include "repro/json_file.hpp"
@@ -11,6 +16,7 @@
 #include "repro/table.hpp"
 #include "run/batch.hpp"
 #include "util/error.hpp"
+#include "util/output_file.hpp"
 
 namespace zc {
 
@@ -23,6 +29,16 @@ std::vector<RegressRun> read_regress_runs(const std::string& path) {
     if (!r.is_object() || !r.contains("name") || !r["name"].is_string())
       throw InputError(path, 0, "every run needs a \"name\"");
     RegressRun run{r["name"], {}};
+    // A name, never a path: it names the report file in --write's directory.
+    static const std::regex name_form(R"([A-Za-z0-9][A-Za-z0-9._+-]{0,99})");
+    if (!std::regex_match(run.name, name_form) || run.name == "runs")
+      throw InputError(path, 0,
+                       "run name '" + run.name +
+                           "': expected letters, digits, '.', '_', '+' or '-' (at most 100, not "
+                           "starting with a dot or a dash, not 'runs'): it names a report file");
+    for (const auto& other : runs)
+      if (other.name == run.name)
+        throw InputError(path, 0, "two runs are named '" + run.name + "': each needs its own name");
     for (const auto& [k, v] : r.items()) {
       if (k == "name") continue;
       const auto& fl = run_flag_names();
@@ -181,17 +197,25 @@ std::vector<std::string> failed_runs(const std::map<std::string, nlohmann::json>
 
 std::map<std::string, nlohmann::json> read_report_dir(const std::string& dir) {
   if (!std::filesystem::is_directory(dir)) throw InputError(dir, 0, "not a directory of reports");
+  if (access(dir.c_str(), R_OK | X_OK) != 0)
+    throw InputError(dir, 0, std::string("cannot read the directory: ") + std::strerror(errno));
   std::map<std::string, nlohmann::json> out;
   for (const auto& e : std::filesystem::directory_iterator(dir)) {
     const auto p = e.path();
     if (p.extension() != ".json" || p.filename() == "runs.json") continue;
-    out[p.stem().string()] = read_json_file(p.string(), "a report");
+    nlohmann::json r = read_json_file(p.string(), "a report");
+    // Read as a reduced report (reduce_report): an object whose status and error are text.
+    if (!r.is_object() || (r.contains("status") && !r["status"].is_string()) ||
+        (r.contains("error") && !r["error"].is_string()))
+      throw InputError(p.string(), 0,
+                       "not a reduced zcube report (expected an object with a text status)");
+    out[p.stem().string()] = std::move(r);
   }
   return out;
 }
 
 void write_report_dir(const std::map<std::string, nlohmann::json>& reps, const std::string& dir) {
-  std::filesystem::create_directories(dir);
+  prepare_output_dir(dir, "--write");
   for (const auto& [name, r] : reps)
     write_text(dir + "/" + name + ".json", r.dump(1) + "\n");
 }

@@ -1,5 +1,7 @@
 #include "repro/table.hpp"
 
+#include "util/output_file.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -82,9 +84,7 @@ std::string Table::markdown() const {
 void write_text(const std::string& path, const std::string& text) {
   const std::filesystem::path p(path);
   if (p.has_parent_path()) std::filesystem::create_directories(p.parent_path());
-  std::ofstream f(path);
-  f << text;
-  if (!f) throw std::runtime_error(path + ": cannot write");
+  write_text_file(path, text); // atomically (util/output_file.hpp)
 }
 
 void Table::write_csv(const std::string& path) const {

@@ -1,6 +1,7 @@
 #include "run/batch.hpp"
 
 #include <poll.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -61,31 +62,33 @@ nlohmann::json finish(Child& c) {
   return {{"status", "error"}, {"error", "simulation process died (" + why + ")"}};
 }
 
-// Ctrl-C (SIGINT) or SIGTERM while a batch runs: the parent kills its children (SIGKILL: a child
-// interrupted in SimGrid's or a library's exit path can hang there), reaps them, and dies of the
-// same signal, so no simulation outlives `zcube sweep` or `zcube reproduce`.
+// Ctrl-C (SIGINT), SIGTERM or SIGHUP (the terminal closed) while a batch runs: the parent kills
+// its children (SIGKILL: a child interrupted in SimGrid's or a library's exit path can hang
+// there), reaps them, and dies of the same signal, so no simulation outlives `zcube sweep` or
+// `zcube reproduce`. A child whose parent dies otherwise (SIGKILL) is killed by the kernel.
 volatile std::sig_atomic_t g_stop_signal = 0;
 
 extern "C" void on_stop_signal(int sig) {
   g_stop_signal = sig;
 }
 
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
 struct StopSignals {
-  struct sigaction old_int {
-  }, old_term{};
+  struct sigaction old[3] = {};
   StopSignals() {
     struct sigaction sa {};
     sa.sa_handler = on_stop_signal;
     sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_int);
-    sigaction(SIGTERM, &sa, &old_term);
-    // A signal the caller ignores (nohup, a background job) stays ignored.
-    if (old_int.sa_handler == SIG_IGN) sigaction(SIGINT, &old_int, nullptr);
-    if (old_term.sa_handler == SIG_IGN) sigaction(SIGTERM, &old_term, nullptr);
+    for (int i = 0; i < 3; ++i) {
+      sigaction(kStopSignals[i], &sa, &old[i]);
+      // A signal the caller ignores (nohup, a background job) stays ignored.
+      if (old[i].sa_handler == SIG_IGN) sigaction(kStopSignals[i], &old[i], nullptr);
+    }
   }
   ~StopSignals() {
-    sigaction(SIGINT, &old_int, nullptr);
-    sigaction(SIGTERM, &old_term, nullptr);
+    for (int i = 0; i < 3; ++i)
+      sigaction(kStopSignals[i], &old[i], nullptr);
   }
 };
 
@@ -123,10 +126,13 @@ std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int 
   while (next < points.size() || !running.empty()) {
     if (g_stop_signal) stop_batch(running);
     while (next < points.size() && int(running.size()) < jobs) {
+      const pid_t parent = getpid();
       const PipedChild child = fork_with_pipe();
       if (child.pid == 0) {
-        signal(SIGINT, SIG_DFL); // the parent's handler is for the parent
-        signal(SIGTERM, SIG_DFL);
+        for (const int sig : kStopSignals) // the parent's handler is for the parent
+          signal(sig, SIG_DFL);
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (getppid() != parent) _exit(1); // the parent died before prctl
         for (const Child& c : running)
           close(c.fd);
         child_main(run_point, points[next], child.fd);

@@ -34,6 +34,7 @@ namespace {
 
 constexpr double kMaxWhatIfDelay_s = 3600;      // --latency, --per-hop, --host-latency
 constexpr double kMinWhatIfBandwidth_Bps = 1.0; // --bandwidth, --host-bandwidth
+constexpr int kMaxFrames = 10000;               // --frames
 
 int parse_int(const std::string& s, const std::string& flag) {
   std::size_t used = 0;
@@ -152,6 +153,12 @@ SimConfig config_from_flags(const std::map<std::string, std::string>& v, const s
     c.height = s.height;
   }
   c.options.frames = v.count("frames") ? parse_int(v.at("frames"), "frames") : 1;
+  // Each picture is simulated and rendered again by the sequential renderer for the comparison:
+  // about a millisecond of host time at 8x8, far more at real sizes.
+  if (c.options.frames > kMaxFrames)
+    throw UsageError("--frames " + v.at("frames") + ": at most " + std::to_string(kMaxFrames) +
+                     " pictures (each is simulated and rendered again for the comparison; "
+                     "longer camera paths take hours of host time)");
   c.overrides = what_ifs(v, c.machine, xml);
   for (const auto& [s, algos] : run_option_specs())
     if (v.count(s.name)) c.options.values[s.name] = v.at(s.name);

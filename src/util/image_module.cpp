@@ -6,6 +6,10 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "util/error.hpp"
+#include "util/error_text.hpp"
+#include "util/output_file.hpp"
+
 namespace zc::image_module {
 
 namespace {
@@ -25,7 +29,7 @@ const Module& module() {
     std::error_code ec;
     const fs::path exe_dir = fs::read_symlink("/proc/self/exe", ec).parent_path();
     const char* name = "zcube_image.so";
-    std::string tried;
+    std::string tried, why = "missing symbols";
     for (const fs::path& p : {exe_dir / name, exe_dir / ".." / "lib" / "zcube" / name}) {
       // RTLD_LOCAL: OpenImageIO's dependencies stay out of the global symbol scope.
       if (void* h = dlopen(p.c_str(), RTLD_NOW | RTLD_LOCAL)) {
@@ -33,10 +37,11 @@ const Module& module() {
                    reinterpret_cast<ReadFn>(dlsym(h, "zcube_image_read"))};
         if (mod.write && mod.read) return mod;
       }
+      if (const char* e = dlerror()) why = e; // read once: a second call returns null
       tried += (tried.empty() ? "" : ", ") + p.string();
     }
-    throw std::runtime_error("image support not available: cannot load " + tried + " (" +
-                             std::string(dlerror() ? dlerror() : "missing symbols") + ")");
+    throw std::runtime_error("image support not available: cannot load " + tried + " (" + why +
+                             ")");
   }();
   return m;
 }
@@ -46,9 +51,12 @@ const Module& module() {
 void write(const std::string& path, int width, int height, int channels, bool is_float,
            const void* data) {
   char err[512] = "";
-  if (module().write(path.c_str(), width, height, channels, is_float ? 1 : 0, data, err,
-                     sizeof err) != 0)
-    throw std::runtime_error(path + ": cannot write image: " + err);
+  write_file_atomically(path, [&](const std::string& tmp) {
+    if (module().write(tmp.c_str(), width, height, channels, is_float ? 1 : 0, data, err,
+                       sizeof err) != 0)
+      throw std::runtime_error(path + ": cannot write image: " + one_line(err));
+    return true;
+  });
 }
 
 ReadStatus read(const std::string& path, Pixels& out, std::string& error) {
