@@ -130,6 +130,7 @@ struct Algorithm {
   std::function<void(NodeContext&)> host;
   std::vector<OptionSpec> options; // the algorithm-specific flags it takes
   bool renders_frames = false;     // draws --frames K pictures of the camera path
+  bool draws_picture = true;       // hands over a picture (--image, --depth; not a benchmark)
   bool needs_cube = false;         // runs on hypercubes only (--topology cube)
   bool untextured = false;         // renders untextured scenes only
   // The one-node run its paper's speed-ups divide by (docs/papers.md): sequential for Charles et

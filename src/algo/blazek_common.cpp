@@ -241,25 +241,17 @@ void hierarchical_merge(NodeContext& ctx, Framebuffer fb) {
   if (r == 0) ctx.deliver_image(0, std::move(fb));
 }
 
-void paste_at_node0(NodeContext& ctx, const NodeRenderer& nr, const Framebuffer& part) {
+void paste_at_node0(NodeContext& ctx, const Framebuffer& part) {
   auto ph = ctx.phase("paste");
   // The node's rows (a strip or interleaved) are one contiguous array of its frame buffer, sent
-  // in place: no packing is charged.
-  auto parts = coll::gatherv(ctx.comm(), 0, part.rgb());
-  auto rows =
-      coll::gatherv(ctx.comm(), 0,
-                    pack(std::vector<int>{part.rows().begin, part.rows().end, part.rows().stride}));
-  if (ctx.rank() != 0) return;
-  Framebuffer img = nr.make_framebuffer(RowSet::all(nr.height()));
-  const std::size_t row = 3 * std::size_t(nr.width());
-  for (std::size_t k2 = 0; k2 < parts.size(); ++k2) {
-    auto rs = unpack<int>(rows[k2]);
-    const RowSet set{rs[0], rs[1], rs[2]};
-    for (int y = set.begin; y < set.end; y += set.stride)
-      std::memcpy(&img.rgb()[std::size_t(y) * row], &parts[k2][std::size_t(set.local(y)) * row],
-                  row);
-  }
-  ctx.deliver_image(0, std::move(img));
+  // in place to node 0, which displays them: no packing is charged. Only colour travels (ch. V);
+  // the picture and its depth map are the rows each node rendered, handed over once sent (the
+  // colour node 0 receives is these rows' colour, byte for byte).
+  (void)coll::gatherv(ctx.comm(), 0, part.rgb());
+  (void)coll::gatherv(
+      ctx.comm(), 0,
+      pack(std::vector<int>{part.rows().begin, part.rows().end, part.rows().stride}));
+  ctx.deliver_rows(0, part);
 }
 
 } // namespace zc::blazek

@@ -109,8 +109,9 @@ void render_host_messages_then_merge(NodeContext& ctx, bool tessellates, bool ac
 // that step (a binomial tree).
 void hierarchical_merge(NodeContext& ctx, Framebuffer fb);
 
-// Strips or interleaved rows pasted at node 0 (colour only), which delivers the picture.
-void paste_at_node0(NodeContext& ctx, const NodeRenderer& nr, const Framebuffer& part);
+// Strips or interleaved rows sent to node 0 (colour only, timed); each node hands over its rows,
+// colour and depth, which make the picture.
+void paste_at_node0(NodeContext& ctx, const Framebuffer& part);
 
 // The strip methods' decomposition: node k of P owns rows [kH/P, (k+1)H/P) (some strips are empty
 // when P > H), and row y lies in strip ((y+1)P - 1) / H, the last strip starting at or before y

@@ -79,7 +79,7 @@ void host_broadcast_node(NodeContext& ctx) {
       render_mesh(ctx, nr, pm, fb, &keep);
     }
   }
-  paste_at_node0(ctx, nr, fb);
+  paste_at_node0(ctx, fb);
 }
 
 } // namespace zc::blazek

@@ -85,7 +85,7 @@ void object_forwarding_node(NodeContext& ctx) {
   auto total =
       coll::reduce(c, 0, std::vector<std::int64_t>{std::int64_t(forwarded)}, coll::Op::Sum);
   if (r == 0) ctx.metrics()["blazek"] = {{"forwarded_messages", total[0]}, {"forward", mode}};
-  paste_at_node0(ctx, nr, fb);
+  paste_at_node0(ctx, fb);
 }
 
 } // namespace zc::blazek

@@ -131,6 +131,7 @@ Algorithm comm_check_algorithm() {
   a.name = "comm-check";
   a.summary = "self-test: every collective and FIFO point-to-point order, data checked";
   a.node = comm_check_node;
+  a.draws_picture = false;
   return a;
 }
 

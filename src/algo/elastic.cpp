@@ -157,7 +157,7 @@ void render_picture(NodeContext& ctx, const LocalScene& local, int frame, bool g
   Framebuffer fb = zbuffer_slice(ctx, nr, local, slice, pv, RowSet::band(bounds[r], bounds[r + 1]));
   const double held =
       double(fb.bytes()) + pv.bytes + double(slice.size() * sizeof(typename Vertices::Record));
-  output_picture(ctx, nr, std::move(fb), bounds, global_load,
+  output_picture(ctx, std::move(fb), global_load,
                  {frame, frame == frames - 1, gather, slice.size(), scene.triangles.size()});
   ctx.release(held);
 }

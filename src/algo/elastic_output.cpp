@@ -10,17 +10,6 @@ namespace zc::elastic {
 
 namespace {
 
-// Node 0's full picture from the slices' colours (--output gather).
-Framebuffer assemble_picture(const NodeRenderer& nr, const std::vector<Bytes>& slices,
-                             const std::vector<int>& bounds) {
-  Framebuffer full = nr.make_framebuffer(RowSet::all(nr.height()));
-  for (std::size_t k = 0; k < slices.size(); ++k)
-    std::copy(slices[k].begin(), slices[k].end(),
-              full.rgb().begin() + std::ptrdiff_t(3) * bounds[k] * nr.width());
-  // Each slice lands in its own rows of the picture (received in place): no packing charged.
-  return full;
-}
-
 // Table 1 from every node's {triangles, workload, rows}, into node 0's report metrics.
 void record_slice_table(NodeContext& ctx, const std::vector<Bytes>& stats,
                         const std::vector<std::int64_t>& global_load, std::size_t scene_triangles) {
@@ -52,27 +41,22 @@ void record_slice_table(NodeContext& ctx, const std::vector<Bytes>& stats,
 
 } // namespace
 
-void output_picture(NodeContext& ctx, const NodeRenderer& nr, Framebuffer slice,
-                    const std::vector<int>& bounds, const std::vector<std::int64_t>& global_load,
-                    const SliceOutput& out) {
+void output_picture(NodeContext& ctx, Framebuffer slice,
+                    const std::vector<std::int64_t>& global_load, const SliceOutput& out) {
   auto ph = ctx.phase("output");
-  std::vector<Bytes> slices;
-  if (out.gather) {
-    // The slice's colours are one contiguous array, sent in place.
-    slices = coll::gatherv(ctx.comm(), 0, slice.rgb());
-  }
+  // --output gather: the slice's colours (one contiguous array, sent in place) go to node 0, which
+  // displays them; the picture and its depth map are the slices themselves, handed over once sent
+  // (node 0's colours are theirs, byte for byte).
+  if (out.gather) (void)coll::gatherv(ctx.comm(), 0, slice.rgb());
   const RowSet rows = slice.rows();
   std::int64_t work = 0;
   for (int y = rows.begin; y < rows.end; ++y)
     work += global_load[y];
   const std::vector<std::int64_t> mine{std::int64_t(out.triangles), work, rows.count()};
   auto stats = coll::gatherv(ctx.comm(), 0, pack(mine));
-  if (!out.gather) ctx.deliver_rows(out.frame, std::move(slice));
-  if (ctx.rank() != 0) return;
-  Framebuffer full;
-  if (out.gather) full = assemble_picture(nr, slices, bounds);
-  if (out.last_frame) record_slice_table(ctx, stats, global_load, out.scene_triangles);
-  if (out.gather) ctx.deliver_image(out.frame, std::move(full));
+  ctx.deliver_rows(out.frame, std::move(slice));
+  if (ctx.rank() == 0 && out.last_frame)
+    record_slice_table(ctx, stats, global_load, out.scene_triangles);
 }
 
 } // namespace zc::elastic

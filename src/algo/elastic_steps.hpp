@@ -75,9 +75,9 @@ struct SliceOutput {
 // Output the picture (§4 "write the image to an output device"). --output device: each node
 // writes its slice to the device itself, so the communication volume does not depend on the
 // resolution (§6); --output gather: slices gathered to node 0 (colour only), which then holds the
-// picture. Node 0 also records Table 1 (per node triangles, workload, rows) after the last frame.
-void output_picture(NodeContext& ctx, const NodeRenderer& nr, Framebuffer slice,
-                    const std::vector<int>& bounds, const std::vector<std::int64_t>& global_load,
-                    const SliceOutput& out);
+// picture (the slices, colour and depth, make the picture of the report). Node 0 also records Table
+// 1 (per node triangles, workload, rows) after the last frame.
+void output_picture(NodeContext& ctx, Framebuffer slice,
+                    const std::vector<std::int64_t>& global_load, const SliceOutput& out);
 
 } // namespace zc::elastic

@@ -95,6 +95,7 @@ Algorithm pingpong_algorithm() {
   a.name = "pingpong";
   a.summary = "communication benchmark: one-way time per message size and distance";
   a.node = pingpong_node;
+  a.draws_picture = false;
   a.check_nodes = check_nodes;
   a.options = {{"from", OptionSpec::Kind::Integer, "0", {}, 0, 1023, "sending node"},
                {"to",

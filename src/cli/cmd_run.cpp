@@ -92,9 +92,18 @@ static int finish(const SimResult& r, const std::string& report, const std::stri
     }
   if (j["image"].contains("sha256") && j["image"]["sha256"].is_null())
     std::cout << "image: none (" << j["algorithm"].get<std::string>() << " draws no picture)\n";
-  else if (j["image"].contains("identical_to_sequential"))
+  else if (j["image"].contains("identical_to_sequential")) {
     std::cout << "image identical to the sequential renderer's: "
-              << j["image"]["identical_to_sequential"] << "\n";
+              << j["image"]["identical_to_sequential"];
+    if (j["image"].contains("compared_with_sequential"))
+      std::cout << " (" << j["image"]["compared_with_sequential"].get<std::string>() << " compared"
+                << (j["image"].contains("differs_from_sequential")
+                        ? "; " + j["image"]["differs_from_sequential"].get<std::string>() +
+                              " differs"
+                        : std::string())
+                << ")";
+    std::cout << "\n";
+  }
   std::cout << "host wall time " << j["host"]["wall_time_s"].get<double>() << " s\n";
   return 0;
 }
@@ -148,11 +157,14 @@ static int cmd_run(std::vector<std::string> args) {
       std::cout << a.name << "  " << a.summary << "\n";
     return 0;
   }
-  check_output_path(report, "--report"); // before the simulation, not after it
-  check_output_path(image, "--image");
-  check_output_path(depth, "--depth");
-  check_output_path(tl.trace, "--trace");
-  check_output_path(tl.gantt, "--gantt");
+  // Every output before the simulation, not after it: writable, not a directory, each its own file.
+  check_output_paths({{"--report", report},
+                      {"--image", image},
+                      {"--depth", depth},
+                      {"--trace", tl.trace},
+                      {"--gantt", tl.gantt}});
+  check_image_path(image, "--image");
+  check_image_path(depth, "--depth");
   auto flags = sf.flags();
   flags["algorithm"] = algorithm;
   flags["frames"] = std::to_string(frames);
@@ -160,6 +172,9 @@ static int cmd_run(std::vector<std::string> args) {
   for (std::size_t i = 0; i < specs.size(); ++i)
     if (!option_values[i].empty()) flags[specs[i].first.name] = option_values[i];
   SimConfig cfg = config_from_flags(flags, scene);
+  if ((!image.empty() || !depth.empty()) && !find_algorithm(cfg.algorithm).draws_picture)
+    throw UsageError(std::string(image.empty() ? "--depth" : "--image") + ": " + cfg.algorithm +
+                     " draws no picture");
   cfg.simgrid_args = sf.simgrid_args();
   check_simgrid_args(cfg.simgrid_args);
   std::cout << describe_overrides(cfg);

@@ -14,10 +14,15 @@ void write_png(const Framebuffer& fb, const std::string& path) {
   image_module::write(path, fb.width(), fb.rows().count(), 3, false, fb.rgb().data());
 }
 
-void write_depth_exr(const Framebuffer& fb, const std::string& path) {
+std::vector<float> depth_map(const Framebuffer& fb) {
   std::vector<float> d(fb.depth());
   for (std::size_t i = 0; i < d.size(); ++i)
     if (fb.ids()[i] == kNoTriangle) d[i] = 1.0f;
+  return d;
+}
+
+void write_depth_exr(const Framebuffer& fb, const std::string& path) {
+  const std::vector<float> d = depth_map(fb);
   image_module::write(path, fb.width(), fb.rows().count(), 1, true, d.data());
 }
 

@@ -2,6 +2,7 @@
 // Writing images (OpenImageIO) and fingerprinting them: the SHA-256 of the RGB8 pixels is what
 // reports and regression tests compare, so it ignores file-format details.
 #include <string>
+#include <vector>
 
 #include "raster/framebuffer.hpp"
 
@@ -9,7 +10,9 @@ namespace zc {
 
 // Writes the colour of a full-screen frame buffer as PNG (or any format OIIO knows by extension).
 void write_png(const Framebuffer& fb, const std::string& path);
-// Writes the depth as a single-channel float EXR; uncovered pixels get 1.0 (the far plane).
+// The depth map --depth writes: each pixel's depth, 1.0 (the far plane) where no triangle is.
+std::vector<float> depth_map(const Framebuffer& fb);
+// Writes the depth map as a single-channel float EXR.
 void write_depth_exr(const Framebuffer& fb, const std::string& path);
 // Hex SHA-256 of width, height and the RGB8 pixels, rows top to bottom.
 std::string image_sha256(const Framebuffer& fb);

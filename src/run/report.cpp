@@ -206,21 +206,35 @@ void add_image_section(nlohmann::json& j, std::vector<FrameImage>& images, const
   std::sort(images.begin(), images.end(),
             [](const FrameImage& a, const FrameImage& b) { return a.frame < b.frame; });
   nlohmann::json img = nlohmann::json::object();
+  // An algorithm that draws no picture (a benchmark) has nothing to compare.
+  const bool compare =
+      cfg.compare_with_sequential &&
+      (cfg.custom ? cfg.custom->draws_picture : find_algorithm(cfg.algorithm).draws_picture);
   if (ok) {
-    bool identical = int(images.size()) == cfg.options.frames;
+    // Colour and depth (the --image and --depth maps) against the sequential renderer's.
+    bool same_colour = int(images.size()) == cfg.options.frames, same_depth = same_colour;
     std::vector<std::string> shas;
     for (int f = 0; f < int(images.size()); ++f) {
       shas.push_back(image_sha256(images[f].image));
-      if (cfg.compare_with_sequential) {
+      if (compare) {
         Scene sf = scene;
         sf.camera = camera_at_frame(scene.camera, f, cfg.options.frames);
-        identical = identical && image_sha256(render_scene(sf, 1).image) == shas.back();
+        const Framebuffer seq = render_scene(sf, 1).image;
+        same_colour = same_colour && image_sha256(seq) == shas.back();
+        same_depth = same_depth && depth_map(seq) == depth_map(images[f].image);
       }
     }
     img["sha256"] = shas.empty() ? nlohmann::json(nullptr) : nlohmann::json(shas.back());
     if (shas.size() > 1) img["frames_sha256"] = shas;
     img["identical_to_sequential"] =
-        cfg.compare_with_sequential ? nlohmann::json(identical) : nlohmann::json(nullptr);
+        compare ? nlohmann::json(same_colour && same_depth) : nlohmann::json(nullptr);
+    if (compare) {
+      img["compared_with_sequential"] = "colour and depth";
+      if (!same_colour || !same_depth)
+        img["differs_from_sequential"] = !same_colour && !same_depth ? "colour and depth"
+                                         : !same_colour              ? "colour"
+                                                                     : "depth";
+    }
   }
   j["image"] = img;
   for (auto& fi : images)
