@@ -1,5 +1,7 @@
 #pragma once
 // Parses a sub-command's arguments with CLI11 and turns its errors into zcube's conventions.
+#include <cmath>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -21,13 +23,18 @@ inline int parse(CLI::App& app, std::vector<std::string> args) {
   } catch (const CLI::ParseError& e) {
     throw UsageError(app.get_name() + ": " + e.what());
   }
-  // An empty value is a mistake (an unset shell variable), not "flag not given".
+  // An empty value is a mistake (an unset shell variable), not "flag not given"; a number is
+  // finite (CLI11's ranges let NaN through: every comparison with it is false).
   for (const CLI::Option* o : app.get_options())
     if (o->count() > 0 && o->get_items_expected_min() > 0)
-      for (const auto& r : o->results())
+      for (const auto& r : o->results()) {
         if (r.empty())
           throw UsageError(o->get_name() + " '': an empty value (leave the flag out for its "
                                            "default)");
+        if (o->get_type_name().starts_with("FLOAT") &&
+            !std::isfinite(std::strtod(r.c_str(), nullptr)))
+          throw UsageError(o->get_name() + " '" + r + "': expected a finite number");
+      }
   return -1;
 }
 

@@ -1,7 +1,10 @@
 #include "util/image_module.hpp"
 
 #include <dlfcn.h>
+#include <fcntl.h>
+#include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <stdexcept>
@@ -59,12 +62,40 @@ void write(const std::string& path, int width, int height, int channels, bool is
   });
 }
 
+namespace {
+
+// The image libraries under OpenImageIO (libpng) print their own warnings and errors on stderr,
+// a line before zcube's one-line error: stderr is sent to /dev/null while a file is decoded (the
+// reason comes back through OpenImageIO's error text).
+struct QuietStderr {
+  int saved = -1;
+  QuietStderr() {
+    const int null = ::open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (null < 0) return;
+    std::fflush(stderr);
+    saved = ::dup(STDERR_FILENO);
+    ::dup2(null, STDERR_FILENO);
+    ::close(null);
+  }
+  ~QuietStderr() {
+    if (saved < 0) return;
+    std::fflush(stderr);
+    ::dup2(saved, STDERR_FILENO);
+    ::close(saved);
+  }
+};
+
+} // namespace
+
 ReadStatus read(const std::string& path, Pixels& out, std::string& error) {
   char err[512] = "";
   unsigned char* px = nullptr;
-  const int rc =
-      module().read(path.c_str(), &out.width, &out.height, &out.channels, &px, err, sizeof err);
-  error = err;
+  int rc = 0;
+  {
+    const QuietStderr quiet;
+    rc = module().read(path.c_str(), &out.width, &out.height, &out.channels, &px, err, sizeof err);
+  }
+  error = one_line(err);
   if (rc != 0) return ReadStatus(rc);
   const std::size_t n =
       std::size_t(out.width) * std::size_t(out.height) * std::size_t(out.channels);

@@ -127,6 +127,15 @@ usage image-width "image.width: expected an integer in 1..16384" "$zcube" render
 usage bezier-15-indices "patch15" "$zcube" render --scene "$tmp/patch15" --image "$tmp/x.png"
 if grep -q "unknown keyword" "$tmp/err"; then bad "bezier-15-indices: read as SDL: $(cat "$tmp/err")"; fi
 
+usage rtol-nan "--rtol 'nan'" "$zcube" regress --against "$src/tests/golden" \
+  --with "$src/tests/golden" --rtol nan
+# A corrupt texture: zcube's one line, not the image library's line before it.
+printf 'newmtl m\nmap_Kd bad.png\n' >"$tmp/bad.mtl"
+printf 'mtllib bad.mtl\nusemtl m\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nf 1/1 2/2 3/3\n' \
+  >"$tmp/tex.obj"
+printf '\x89PNG\r\n\x1a\n garbage' >"$tmp/bad.png"
+usage corrupt-texture "bad.png" "$zcube" render --scene "$tmp/tex.obj" --image "$tmp/x.png"
+
 # --- Outputs: checked before the run, each its own file, written atomically.
 usage image-txt "--image" "$zcube" run "${small[@]}" --image "$tmp/o.txt"
 usage depth-txt "--depth" "$zcube" run "${small[@]}" --depth "$tmp/o.txt"

@@ -58,8 +58,8 @@ TEST(PlatformRoutes, ConnectedGraphsAndCompleteFullZonesPass) {
 TEST(PlatformRoutes, AHostLeftOutIsNamedInBothDirections) {
   // b -> c removed: c is reached from nobody.
   const std::string no_into_c = route("a", "b") + route("c", "a");
-  EXPECT_NE(refusal(platform("DijkstraCache", no_into_c)).find("no route from 'a' to 'c'"),
-            std::string::npos);
+  EXPECT_NE(refusal(platform("DijkstraCache", no_into_c)).find("no route from 'b' to 'a'"),
+            std::string::npos); // b reaches neither c nor a
   // c -> a removed: a cannot be reached back.
   const std::string no_back = route("a", "b") + route("b", "c");
   EXPECT_NE(refusal(platform("Dijkstra", no_back)).find("to 'a'"), std::string::npos);
@@ -74,7 +74,7 @@ TEST(PlatformRoutes, AFullZoneNeedsEveryOrderedPair) {
 
 TEST(PlatformRoutes, ZoneRoutesJoinTheZonesBothWaysThroughTheirOwnHosts) {
   const std::string up_only =
-      R"(<zoneRoute src="n" dst="h" gw_src="a" gw_dst="srm"><link_ctn id="up"/></zoneRoute>)";
+      R"(<zoneRoute src="n" dst="h" gw_src="a" gw_dst="srm" symmetrical="NO"><link_ctn id="up"/></zoneRoute>)";
   EXPECT_NE(refusal(platform("Dijkstra", cycle, up_only)).find("no route from 'h' to 'n'"),
             std::string::npos);
   const std::string bad_gateway =
