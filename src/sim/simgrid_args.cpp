@@ -91,7 +91,7 @@ std::string known_keys() {
 std::string range_text(const Setting& s) {
   auto num = [](double v) {
     char b[32];
-    std::snprintf(b, sizeof b, "%g", v);
+    std::snprintf(b, sizeof b, "%.10g", v);
     return std::string(b);
   };
   switch (s.kind) {
