@@ -115,8 +115,24 @@ def save(fig, path):
         "legend": legend_labels(fig)})
     # Room for a figure legend under the panels and for the title above them.
     fig.tight_layout(rect=(0, 0.09 if fig.legends else 0, 1, 0.96 if fig._suptitle else 1))
-    fig.savefig(path, dpi=110, metadata=META[FORMAT])
+    save_atomically(path, lambda tmp: fig.savefig(tmp, dpi=110, metadata=META[FORMAT]))
     plt.close(fig)
+
+
+def save_atomically(path, write):
+    """Writes `path` through write(tmp), a temporary file beside it with the same extension, then
+    renames it into place: a failed or interrupted drawing leaves no partial file (as zcube's own
+    outputs, src/util/output_file.hpp)."""
+    d, name = os.path.split(path)
+    stem, ext = os.path.splitext(name)
+    tmp = os.path.join(d, f".{stem}.zcube-{os.getpid()}{ext}")
+    try:
+        write(tmp)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+        raise
 
 
 def curves(ax, groups, xkey, ykey, colors, ideal=None, logy=False, styles=None, dodge=0.0):
@@ -561,8 +577,10 @@ def main(argv):
     elif not a.gantt:
         p.error("give RESULTS_DIR, --sweep or --gantt")
     if a.describe:
-        with open(a.describe, "w") as f:
-            json.dump(FIGURES, f, indent=1)
+        def describe(tmp):
+            with open(tmp, "w") as f:
+                json.dump(FIGURES, f, indent=1)
+        save_atomically(a.describe, describe)
 
 
 if __name__ == "__main__":
