@@ -1,0 +1,172 @@
+#!/usr/bin/python3
+"""zcube's host speed in one run (build times excluded): `zcube run --list`, `zcube reproduce`
+(plots included), `zcube render` against the 1024-node elastic run of the same scene (and its peak
+memory), the aapc-hbp and node-initiated rows of bench/sim_scaling.py at 64 nodes, and zcube_bench
+against Mesa's llvmpipe. With --before OLD_ZCUBE every measurement alternates between the two
+binaries run by run (A B A B ...: the same load for both) and the ratio is taken pair by pair.
+Writes OUT/speed.csv (median, min and max of each figure) and OUT/README.md.
+
+    bench/speed.py [--zcube build/zcube] [--before OLD_ZCUBE] [--repeat 5] [--out results/speed]
+                   [--bench build/zcube_bench] [--before-bench OLD_BENCH] [--skip reproduce,bench]
+
+Host wall-clock times: a shared machine's load is printed beside them (1-minute load average at
+the start and the end); compare the paired ratios, not the absolute times.
+"""
+import argparse
+import csv
+import json
+import os
+import re
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+
+def timed(cmd, may_fail=False):
+    """Runs cmd; returns (wall seconds, peak RSS MiB, CPU seconds)."""
+    t0 = time.perf_counter()
+    p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+    err = p.stderr.read().decode()
+    _, status, ru = os.wait4(p.pid, 0)
+    wall = time.perf_counter() - t0
+    p.stderr.close()
+    if status != 0 and not may_fail:
+        sys.exit(f"{' '.join(cmd)} failed: {err.strip()}")
+    return wall, ru.ru_maxrss / 1024, ru.ru_utime + ru.ru_stime
+
+
+def run_cmd(z, algo, machine, nodes, scene, size, extra=()):
+    return [z, "run", "--machine", machine, "--nodes", str(nodes), "--algorithm", algo,
+            "--scene", scene, "--size", size] + list(extra)
+
+
+def cases(tmp):
+    """name -> function(zcube) -> list of (figure, value) of one run."""
+    def wall_rss(cmd):
+        return lambda z: (lambda w, m, c: [("wall_s", w), ("peak_mib", m), ("cpu_s", c)])(
+            *timed(cmd(z)))
+
+    def reproduce(z):
+        out = os.path.join(tmp, "reproduce")
+        shutil.rmtree(out, ignore_errors=True)
+        w, m, c = timed([z, "reproduce", "--out", out])
+        return [("wall_s", w), ("peak_mib", m), ("cpu_s", c)]
+
+    png = os.path.join(tmp, "bone.png")
+    return {
+        "run --list": wall_rss(lambda z: [z, "run", "--list"]),
+        "render bone 512x512": wall_rss(lambda z: [z, "render", "--scene", "scenes/bone.json",
+                                                   "--size", "512x512", "--image", png]),
+        "elastic 1024 nodes bone 512x512": wall_rss(
+            lambda z: run_cmd(z, "elastic", "ipsc860", 1024, "scenes/bone.json", "512x512")),
+        "aapc-hbp 64 nodes 1pot 400x400": wall_rss(
+            lambda z: run_cmd(z, "aapc-hbp", "ipsc860", 64, "scenes/kurc/1pot.json", "400x400")),
+        "node-initiated 64 nodes spheres_16 256x256": wall_rss(
+            lambda z: run_cmd(z, "node-initiated", "ipsc860", 64, "scenes/blazek/spheres_16.json",
+                              "256x256", ["--memory", "16MiB"])),
+        "reproduce": reproduce,
+    }
+
+
+def paired(binaries, measure, repeat):
+    """measure(z) for each binary in turn, `repeat` times: {z: {figure: [values]}}."""
+    got = {z: {} for z in binaries}
+    for _ in range(repeat):
+        for z in binaries:
+            for k, v in measure(z):
+                got[z].setdefault(k, []).append(v)
+    return got
+
+
+def bench_table(exe, quick):
+    """zcube_bench's rows: {(scene, size, threads): zcube triangles/s over llvmpipe's}."""
+    out = subprocess.run([exe] + (["--quick"] if quick else []), capture_output=True, text=True,
+                         check=True).stdout
+    rows = {}
+    for line in out.splitlines():
+        m = re.match(r"(\w+)\s+(\d+x\d+)\s+(\d+)\s+([\d.]+)\s+[\d.]+\s+([\d.]+)\s+[\d.]+\s+([\d.]+)",
+                     line.strip())
+        if m:
+            rows[(m[1], m[2], int(m[3]))] = (float(m[4]), float(m[5]), float(m[6]))
+    return rows
+
+
+def load():
+    return os.getloadavg()[0]
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p.add_argument("--zcube", default="build/zcube")
+    p.add_argument("--before")
+    p.add_argument("--bench", default="build/zcube_bench")
+    p.add_argument("--before-bench")
+    p.add_argument("--repeat", type=int, default=5)
+    p.add_argument("--out", default="results/speed")
+    p.add_argument("--skip", default="", help="comma-separated: reproduce, bench, elastic")
+    a = p.parse_args()
+    skip = set(filter(None, a.skip.split(",")))
+    binaries = [a.zcube] + ([a.before] if a.before else [])
+    rows = []
+    load0 = load()
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, measure in cases(tmp).items():
+            if any(s in name for s in skip):
+                continue
+            n = a.repeat if name != "reproduce" and "1024" not in name else max(1, a.repeat // 2)
+            if name == "run --list":
+                n = 4 * a.repeat
+            got = paired(binaries, measure, n)
+            for k in got[a.zcube]:
+                this = got[a.zcube][k]
+                row = {"case": name, "figure": k, "runs": len(this),
+                       "median": statistics.median(this), "min": min(this), "max": max(this)}
+                if a.before:
+                    old = got[a.before][k]
+                    ratios = [x / y for x, y in zip(this, old) if y > 0]
+                    row.update({"before_median": statistics.median(old),
+                                "ratio_median": statistics.median(ratios) if ratios else ""})
+                rows.append(row)
+                print(row, flush=True)
+        if "bench" not in skip and os.path.exists(a.bench):
+            exes = [a.bench] + ([a.before_bench] if a.before_bench else [])
+            tables = {e: [] for e in exes}
+            for _ in range(max(1, a.repeat // 2)):
+                for e in exes:
+                    tables[e].append(bench_table(e, quick=True))
+            for key in tables[a.bench][0]:
+                name = f"zcube_bench {key[0]} {key[1]} {key[2]} thread(s)"
+                vs_lp = [t[key][2] for t in tables[a.bench] if key in t]
+                row = {"case": name, "figure": "tri_per_s_over_llvmpipe", "runs": len(vs_lp),
+                       "median": statistics.median(vs_lp), "min": min(vs_lp), "max": max(vs_lp)}
+                if a.before_bench:
+                    old = [t[key][2] for t in tables[a.before_bench] if key in t]
+                    ratios = [x[key][0] / y[key][0] for x, y in
+                              zip(tables[a.bench], tables[a.before_bench]) if key in x and key in y]
+                    row.update({"before_median": statistics.median(old),
+                                "ratio_median": statistics.median(ratios)})
+                rows.append(row)
+                print(row, flush=True)
+    os.makedirs(a.out, exist_ok=True)
+    fields = ["case", "figure", "runs", "median", "min", "max", "before_median", "ratio_median"]
+    with open(os.path.join(a.out, "speed.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields, lineterminator="\n")
+        w.writeheader()
+        for r in rows:
+            w.writerow({k: (f"{v:.4g}" if isinstance(v, float) else v) for k, v in r.items()})
+    with open(os.path.join(a.out, "README.md"), "w") as f:
+        f.write("# Host speed (bench/speed.py)\n\n"
+                f"`bench/speed.py {' '.join(sys.argv[1:])}` on {os.cpu_count()} cores, 1-minute "
+                f"load average {load0:.1f} at the start and {load():.1f} at the end (a shared "
+                "machine: compare the paired ratios, not the absolute times). Each row of "
+                "`speed.csv`: the median, min and max of this binary's runs and, with --before, "
+                "the other binary's median and the median of the pair-by-pair ratio this/before "
+                "(below 1: this one is faster or smaller). zcube_bench rows: zcube's triangles/s "
+                "over Mesa llvmpipe's (above 1: zcube ahead), ratio: this bench's triangles/s over "
+                "the before bench's.\n")
+
+if __name__ == "__main__":
+    main()
