@@ -33,19 +33,29 @@ std::vector<Poly> host_polygons(const Scene& s, std::size_t o, Counters& c) {
   return out;
 }
 
-Bytes encode_object(const Scene& s, std::size_t o) {
+Message encode_object(const Scene& s, std::size_t o) {
   const ObjectDesc& d = s.objects[o];
   const bool mesh = d.kind == "mesh";
   ObjectHeader h{d.first_vertex, d.vertex_count, d.first_triangle, d.triangle_count, mesh};
   Bytes b = pack(&h, 1);
+  std::size_t charged = records::blazek::kObjectDescription;
   if (mesh) {
     Counters ignored;
     auto polys = host_polygons(s, o, ignored);
     append(b, polys.data(), polys.size());
+    charged += polys.size() * records::blazek::kPolygon;
   } else {
     append(b, d.text.data(), d.text.size());
   }
-  return b;
+  return {std::move(b), charged};
+}
+
+Message polygon_packet(const std::vector<Poly>& polys) {
+  return {pack(polys), polys.size() * records::blazek::kPolygon};
+}
+
+double frame_buffer_bytes(const Framebuffer& fb) {
+  return double(fb.pixel_count() * records::blazek::kFrameBufferPixel);
 }
 
 Mesh mesh_of(const std::vector<Poly>& polys) {
@@ -185,15 +195,16 @@ void render_host_messages_then_merge(NodeContext& ctx, bool tessellates, bool ac
   {
     auto ph = ctx.phase("render"); // the clear of the new frame buffer is the phase's
     fb = nr.make_framebuffer(RowSet::all(nr.height()));
-    ctx.alloc(double(fb.bytes()), "frame buffer");
+    ctx.alloc(frame_buffer_bytes(fb), "frame buffer");
     Counters k;
     k.pixels_cleared = fb.pixel_count();
     ctx.charge(k);
     std::deque<SendHandle> acks;
     for (;;) {
-      Bytes b = ctx.comm().recv(ctx.comm().host_rank(), kTagHost);
+      const Message got = ctx.comm().recv_message(ctx.comm().host_rank(), kTagHost);
+      const Bytes& b = got.payload;
       if (is_end(b)) break;
-      const Held msg(ctx, double(b.size()), "host message");
+      const Held msg(ctx, double(got.charged), "host message");
       const Mesh m = mesh_of_message(b);
       // Host initiated renders out of the packet itself; node initiated holds the tessellation
       // (the projected vertices are counted with it).
@@ -225,18 +236,20 @@ void hierarchical_merge(NodeContext& ctx, Framebuffer fb) {
     if (r & bit) {
       // The frame buffer is sent in place (its arrays are contiguous): no packing is charged;
       // zcube's copy into one payload is an artefact of its wire format.
-      Bytes out = fb.pack_locations(0, fb.pixel_count());
-      c.send(r ^ bit, kTagMerge, std::move(out));
+      // Charged as the thesis's frame buffer (records.hpp), without zcube's triangle ids.
+      c.send(r ^ bit, kTagMerge,
+             Message{fb.pack_locations(0, fb.pixel_count()), std::size_t(frame_buffer_bytes(fb))});
       return;
     }
     if ((r ^ bit) >= c.size()) continue; // no partner when P is not a power of two (a ring of 3)
-    Bytes in = c.recv(r ^ bit, kTagMerge);
-    ctx.alloc(double(in.size()), "merge receive buffer");
+    const Message got = c.recv_message(r ^ bit, kTagMerge);
+    const Bytes& in = got.payload;
+    ctx.alloc(double(got.charged), "merge receive buffer");
     Counters k;
     // Every location is compared (Algorithm 4), straight out of the received buffer.
     k.merge_ops = fb.merge_locations(in, 0);
     ctx.charge(k);
-    ctx.release(double(in.size()));
+    ctx.release(double(got.charged));
   }
   if (r == 0) ctx.deliver_image(0, std::move(fb));
 }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "algo/algorithm.hpp"
+#include "algo/records.hpp"
 #include "algo/world_polygon.hpp"
 #include "raster/framebuffer.hpp"
 #include "raster/renderer.hpp"
@@ -13,10 +14,15 @@
 
 namespace zc::blazek {
 
-// A polygon as it travels (host initiated packets, forwarded polygons): the world polygon record,
-// 80 bytes. (The thesis's packets were smaller: "packets containing 100 polygons each ... three
-// kilobytes", about 30 bytes a polygon, ch. V.)
+// A polygon as it travels (host initiated packets, forwarded polygons): zcube's payload is the
+// world polygon record (80 bytes); the network is charged the thesis's 30 bytes a polygon
+// (records.hpp: "packets containing 100 polygons each ... three kilobytes", ch. V).
 using Poly = WorldPolygon;
+// A packet of polygons, charged as the thesis's records.
+Message polygon_packet(const std::vector<Poly>& polys);
+// A frame buffer (full, strip or interleaved rows) as the thesis's node holds it: 10 bytes a pixel
+// (records.hpp).
+double frame_buffer_bytes(const Framebuffer& fb);
 
 constexpr int kTagHost = 1, kTagForward = 2, kTagMerge = 3, kTagAck = 4;
 
@@ -63,9 +69,11 @@ Mesh mesh_of(const std::vector<Poly>& polys);
 // The polygons of a subset (indices into m.tris) of a mesh, to be sent.
 std::vector<Poly> polys_of(const Mesh& m, const std::vector<std::uint32_t>& subset);
 
-// Object description message: ranges + the one-line text (~100 bytes). Mesh objects, which no
-// node can re-tessellate, travel as their polygons (kind "mesh" + a polygon payload).
-Bytes encode_object(const Scene& s, std::size_t object);
+// Object description message: ranges + the one-line text, charged as the thesis's 100-byte
+// "object description packets" (records.hpp). Mesh objects, which no node can re-tessellate,
+// travel as their polygons (kind "mesh" + a polygon payload), charged a description and 30 bytes a
+// polygon.
+Message encode_object(const Scene& s, std::size_t object);
 // Decodes and tessellates (charging triangles_tessellated).
 Mesh object_mesh(NodeContext& ctx, const Bytes& msg);
 // The polygons of an object as the host tessellates them (charged to the caller).

@@ -16,17 +16,19 @@ void host_broadcast_host(NodeContext& ctx) {
   const Scene& s = ctx.scene();
   check_scene(s);
   auto ph = ctx.phase("distribute");
-  // All descriptions in one message: u32 count, then (u32 size, bytes) per object.
-  Bytes all;
+  // All descriptions in one message: u32 count, then (u32 size, bytes) per object; charged as the
+  // thesis's description packets (records.hpp) and the count.
+  Message all{{}, sizeof(std::uint32_t)};
   const std::uint32_t n = std::uint32_t(s.objects.size());
-  append(all, &n, 1);
+  append(all.payload, &n, 1);
   for (std::size_t o = 0; o < s.objects.size(); ++o) {
-    Bytes b = encode_object(s, o);
-    const std::uint32_t sz = std::uint32_t(b.size());
-    append(all, &sz, 1);
-    append(all, b.data(), b.size());
+    Message b = encode_object(s, o);
+    const std::uint32_t sz = std::uint32_t(b.payload.size());
+    append(all.payload, &sz, 1);
+    append(all.payload, b.payload.data(), b.payload.size());
+    all.charged += b.charged;
   }
-  ctx.charge_packing(all.size());
+  ctx.charge_packing(all.charged);
   ctx.comm().send(0, kTagHost, std::move(all));
 }
 
@@ -39,15 +41,16 @@ void host_broadcast_node(NodeContext& ctx) {
     throw UsageError("--lines must be strips or interleaved");
   const NodeRenderer nr(ctx.scene());
   const int H = nr.height();
-  Bytes all;
+  Message scene;
   {
     auto ph = ctx.phase("broadcast");
-    if (r == 0) all = c.recv(c.host_rank(), kTagHost);
-    all = coll::broadcast(c, 0, std::move(all));
+    if (r == 0) scene = c.recv_message(c.host_rank(), kTagHost);
+    scene = coll::broadcast(c, 0, std::move(scene));
   }
+  const Bytes& all = scene.payload;
   const RowSet rows = lines == "strips" ? strip_rows(r, P, H) : RowSet::interleaved(r, P, H);
   Framebuffer fb = nr.make_framebuffer(rows);
-  ctx.alloc(double(fb.bytes() + all.size()), "rows frame buffer and scene");
+  ctx.alloc(frame_buffer_bytes(fb) + double(scene.charged), "rows frame buffer and scene");
   {
     auto ph = ctx.phase("render");
     std::uint32_t n = 0, at = 4;

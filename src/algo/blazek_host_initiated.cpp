@@ -28,10 +28,11 @@ void host_initiated_host(NodeContext& ctx) {
     if (packet.empty()) return;
     // Flow control: wait until the node has rendered packet i - kHostWindow.
     if (sent[std::size_t(next)]++ >= kHostWindow) c.recv(next, kTagAck);
-    ctx.charge_packing(packet.size() * sizeof(Poly));
+    Message m = polygon_packet(packet);
+    ctx.charge_packing(m.charged);
     // Blocking: the host waits for each packet to reach its node (the SRM has one link, to node
     // 0); a node buffers up to kHostWindow packets it has not rendered yet.
-    c.send(next, kTagHost, pack(packet));
+    c.send(next, kTagHost, std::move(m));
     next = (next + 1) % P;
     packet.clear();
   };

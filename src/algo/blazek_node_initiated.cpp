@@ -13,9 +13,9 @@ void describe_round_robin(NodeContext& ctx) {
   Comm& c = ctx.comm();
   auto ph = ctx.phase("distribute");
   for (std::size_t o = 0; o < s.objects.size(); ++o) {
-    Bytes b = encode_object(s, o);
-    ctx.charge_packing(b.size());
-    c.send(int(o % std::size_t(c.size())), kTagHost, std::move(b));
+    Message m = encode_object(s, o);
+    ctx.charge_packing(m.charged);
+    c.send(int(o % std::size_t(c.size())), kTagHost, std::move(m));
   }
   for (int n = 0; n < c.size(); ++n)
     c.send(n, kTagHost, Bytes{});

@@ -23,15 +23,16 @@ void object_forwarding_node(NodeContext& ctx) {
   auto strip_of = [&](int y) { return strip_of_row(y, P, H); };
   const RowSet mine = strip_rows(r, P, H);
   Framebuffer fb = nr.make_framebuffer(mine);
-  ctx.alloc(double(fb.bytes()), "strip frame buffer");
+  ctx.alloc(frame_buffer_bytes(fb), "strip frame buffer");
   std::uint64_t forwarded = 0;
   std::vector<SendHandle> sends;
   {
     auto ph = ctx.phase("render");
     for (;;) {
-      Bytes b = c.recv(c.host_rank(), kTagHost);
+      const Message got = c.recv_message(c.host_rank(), kTagHost);
+      const Bytes& b = got.payload;
       if (is_end(b)) break;
-      const Held msg(ctx, double(b.size()), "host message");
+      const Held msg(ctx, double(got.charged), "host message");
       const Mesh m = object_mesh(ctx, b);
       const ProjectedMesh pm(ctx, nr, m);
       const Held held(ctx, m.bytes() + double(pm.pv.size() * sizeof(ProjectedVertex)), "polygons");
@@ -51,8 +52,8 @@ void object_forwarding_node(NodeContext& ctx) {
       for (int s = 0; s < P; ++s)
         if (!others[s].empty()) {
           ++forwarded;
-          sends.push_back(
-              c.isend(s, kTagForward, mode == "object" ? b : pack(polys_of(m, others[s]))));
+          sends.push_back(c.isend(s, kTagForward,
+                                  mode == "object" ? got : polygon_packet(polys_of(m, others[s]))));
         }
       render_mesh(ctx, nr, pm, fb, &own);
     }
@@ -60,12 +61,13 @@ void object_forwarding_node(NodeContext& ctx) {
       if (n != r) sends.push_back(c.isend(n, kTagForward, Bytes{}));
     // Forwarded work, until every other node has said it is done.
     for (int ends = 0; ends < P - 1;) {
-      Bytes b = c.recv(kAnySource, kTagForward);
+      const Message got = c.recv_message(kAnySource, kTagForward);
+      const Bytes& b = got.payload;
       if (is_end(b)) {
         ++ends;
         continue;
       }
-      const Held msg(ctx, double(b.size()), "forwarded message");
+      const Held msg(ctx, double(got.charged), "forwarded message");
       if (mode == "object") {
         // Re-tessellated; only the polygons in this strip are rendered.
         const Mesh m = object_mesh(ctx, b);

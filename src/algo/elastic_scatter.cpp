@@ -5,6 +5,7 @@
 
 #include "algo/elastic_steps.hpp"
 #include "algo/elastic_wire.hpp"
+#include "algo/records.hpp"
 #include "comm/collectives.hpp"
 #include "comm/wire.hpp"
 
@@ -39,7 +40,7 @@ std::vector<Vertex> scatter_vertices(NodeContext& ctx, const Scene& scene) {
     // into a payload is an artefact of its wire format), so no packing is charged.
   }
   auto mine = unpack<Vertex>(coll::scatterv(ctx.comm(), 0, std::move(parts)));
-  ctx.alloc(double(mine.size() * sizeof(Vertex)), "vertex block");
+  ctx.alloc(double(mine.size() * records::charles::kVertex), "vertex block");
   return mine;
 }
 

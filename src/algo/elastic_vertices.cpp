@@ -13,13 +13,15 @@ void BroadcastVertices::exchange(NodeContext& ctx, const LocalScene& local,
                                  const std::vector<ProjectedVertex>& mine) {
   auto ph = ctx.phase("multibroadcast_vertices");
   all.reserve(local.scene_vertices);
-  for (auto& b : coll::allgatherv(ctx.comm(), pack(mine))) {
-    auto part = unpack<ProjectedVertex>(b);
+  // Charged as the paper's projected vertices (screen point and R.G.B. colour, records.hpp).
+  const Message m{pack(mine), mine.size() * records::charles::kProjectedVertex};
+  for (auto& b : coll::allgatherv(ctx.comm(), m)) {
+    auto part = unpack<ProjectedVertex>(b.payload);
     all.insert(all.end(), part.begin(), part.end());
   }
   // Each node's projected vertices are one contiguous array, multi-broadcast in place into the
   // array of all of them (PPCM): no packing charged.
-  bytes = double(all.size() * sizeof(ProjectedVertex));
+  bytes = double(all.size() * records::charles::kProjectedVertex);
 }
 
 namespace {
@@ -52,20 +54,20 @@ void RequestedVertices::exchange(NodeContext& ctx, const LocalScene& local,
   for (int k = 0; k < P; ++k)
     requests[k] = pack(want[k]);
   auto asked = coll::alltoallv(ctx.comm(), std::move(requests));
-  std::vector<Bytes> answers(P);
+  std::vector<Message> answers(P);
   for (int k = 0; k < P; ++k) {
     std::vector<ProjectedVertex> answer;
     for (auto id : unpack<std::uint32_t>(asked[k]))
       answer.push_back(mine[id - local.first_vertex]);
-    answers[k] = pack(answer);
+    answers[k] = {pack(answer), answer.size() * records::charles::kProjectedVertex};
   }
   auto got = coll::alltoallv(ctx.comm(), std::move(answers));
   for (int k = 0; k < P; ++k) {
-    auto pvs = unpack<ProjectedVertex>(got[k]);
+    auto pvs = unpack<ProjectedVertex>(got[k].payload);
     for (std::size_t i = 0; i < pvs.size(); ++i)
       known[want[k][i]] = pvs[i];
   }
-  bytes = double(known.size() * (sizeof(ProjectedVertex) + 4)); // + the id as key
+  bytes = double(known.size() * (records::charles::kProjectedVertex + 4)); // + the id as key
   ctx.charge_packing(std::size_t(bytes));
 }
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "algo/elastic_steps.hpp"
+#include "algo/records.hpp"
 #include "comm/wire.hpp"
 
 namespace zc::elastic {
@@ -26,8 +27,9 @@ struct BroadcastVertices {
                 const std::vector<ProjectedVertex>& mine);
   const ProjectedVertex& at(std::uint32_t id) const { return all[id]; }
   Record record(const TriRec& t) const { return t; }
-  // What a MultiScatter record carries besides the triangle's wire form: nothing.
-  static constexpr std::size_t kExtraWireBytes = 0;
+  // What a MultiScatter record carries besides the triangle's wire form: nothing (and what the
+  // modelled machine is charged for it, records.hpp).
+  static constexpr std::size_t kExtraWireBytes = 0, kExtraRecordBytes = 0;
   void append_extra(Bytes&, const TriRec&) const {}
   static Record from_wire(const TriRec& t, const std::uint8_t*) { return t; }
   static const TriRec& triangle(const Record& r) { return r; }
@@ -52,7 +54,8 @@ struct RequestedVertices {
   const ProjectedVertex& at(std::uint32_t id) const { return known.at(id); }
   Record record(const TriRec& t) const { return {t, {at(t.v[0]), at(t.v[1]), at(t.v[2])}}; }
   // A MultiScatter record carries the triangle's three projected vertices.
-  static constexpr std::size_t kExtraWireBytes = 3 * sizeof(ProjectedVertex);
+  static constexpr std::size_t kExtraWireBytes = 3 * sizeof(ProjectedVertex),
+                               kExtraRecordBytes = 3 * records::charles::kProjectedVertex;
   void append_extra(Bytes& b, const TriRec& t) const {
     for (int k = 0; k < 3; ++k)
       append(b, &at(t.v[k]), 1);

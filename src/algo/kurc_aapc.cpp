@@ -25,26 +25,31 @@ protected:
     std::uint64_t owned_rows = 0;
     for (int node : owner)
       owned_rows += node == r;
-    ctx.alloc(double(owned_rows) * width_ * double(Framebuffer::kLocationBytes),
+    ctx.alloc(double(owned_rows) * width_ * double(records::kurc::kZbufferLocation),
               "z-buffer of the owned scanlines");
-    std::vector<Bytes> out = serialize_sparse_by_owner(wpa_, owner, P);
+    std::vector<Message> out;
+    for (auto& b : serialize_sparse_by_owner(wpa_, owner, P))
+      out.push_back(sparse_message(std::move(b)));
     std::vector<int> runs(std::size_t(P), 0); // runs of owned scanlines per destination
     for (int y = 0; y < H; ++y)
       if (owner[y] >= 0 && owner[y] < P)
         runs[std::size_t(owner[y])] += y == 0 || owner[y - 1] != owner[y];
     double gathered = 0; // send buffers gathered from several runs of scanlines (copies)
     for (int k = 0; k < P; ++k)
-      if (k != r && runs[std::size_t(k)] > 1) gathered += double(out[k].size());
+      if (k != r && runs[std::size_t(k)] > 1) gathered += double(out[k].charged);
     w.bytes_packed += std::uint64_t(gathered);
     ctx.alloc(gathered, "send buffers");
     // Step k of the schedule exchanges with node r ^ k.
     m.step_bytes.assign(std::size_t(std::max(0, P - 1)), 0.0);
     for (int k = 1; k < P; ++k)
-      m.step_bytes[k - 1] = double(out[r ^ k].size());
-    auto in = coll::alltoallv(c, std::move(out), coll::AllToAll::Pairwise);
+      m.step_bytes[k - 1] = double(out[r ^ k].charged);
+    auto msgs = coll::alltoallv(c, std::move(out), coll::AllToAll::Pairwise);
     double received = 0; // every other node's pixels are held until merged
-    for (int k = 0; k < P; ++k)
-      if (k != r) received += double(in[k].size());
+    std::vector<Bytes> in;
+    for (int k = 0; k < P; ++k) {
+      if (k != r) received += double(msgs[k].charged);
+      in.push_back(std::move(msgs[k].payload));
+    }
     ctx.alloc(received, "receive buffers");
     ctx.release(gathered);
     // The local pixels first, then every other node's in rank order, merged into the owned rows.

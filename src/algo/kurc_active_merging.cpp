@@ -2,6 +2,7 @@
 #include "algo/kurc_active_merging.hpp"
 
 #include <algorithm>
+#include <cstring>
 
 #include "comm/collectives.hpp"
 
@@ -12,7 +13,16 @@ void ActivePixelMerging::local_zbuffer(NodeContext& ctx, const NodeRenderer& nr,
   const int W = width_ = nr.width();
   ctx.alloc(double(W) * 4, "MSA");
   wpa_ = zbuffer_spans(spans.lists, spans.batch, nr.shade(), W, w);
-  ctx.alloc(double(wpa_.bytes()), "WPA");
+  ctx.alloc(wpa_record_bytes(wpa_), "WPA");
+}
+
+Message sparse_message(Bytes payload) {
+  std::uint32_t rows = 0;
+  if (payload.size() >= sizeof rows) std::memcpy(&rows, payload.data(), sizeof rows);
+  const std::size_t header = 4 + 8 * std::size_t(rows);
+  const std::size_t pixels = (payload.size() - std::min(header, payload.size())) / kWirePixelBytes;
+  const std::size_t charged = header + pixels * records::kurc::kWinningPixel;
+  return {std::move(payload), charged};
 }
 
 // §4.1: per-scanline counts of local foremost pixels, summed over the machine, then shared out.

@@ -15,6 +15,7 @@
 #include "algo/algorithm.hpp"
 #include "algo/kurc_partition.hpp"
 #include "algo/kurc_span_lists.hpp"
+#include "algo/records.hpp"
 #include "raster/active_pixels.hpp"
 #include "raster/renderer.hpp"
 
@@ -45,6 +46,16 @@ public:
 std::unique_ptr<MergeScheme> make_zbuf_exc();
 std::unique_ptr<MergeScheme> make_pair(const ScreenPartition& partition);
 std::unique_ptr<MergeScheme> make_aapc(const ScreenPartition& partition);
+
+// A sparse pixel message (serialize_sparse) as the paper's program sends it: its row counts, and
+// each pixel as a WPA entry (records.hpp) instead of zcube's kWirePixelBytes.
+Message sparse_message(Bytes payload);
+// The WPA (or merged pixels) as the paper's node holds it: a WPA entry a pixel and the scanline
+// offsets (a C int each).
+inline double wpa_record_bytes(const ActivePixels& a) {
+  return double(a.count() * records::kurc::kWinningPixel +
+                a.row_begin.size() * records::kurc::kCountEntry);
+}
 
 // Message tags of the schemes' exchanges (stage i uses base + i).
 constexpr int kTagPair = 100, kTagZbuf = 200;

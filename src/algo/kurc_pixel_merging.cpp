@@ -53,13 +53,17 @@ void record_measures(NodeContext& ctx, const MergeScheme& scheme, const Framebuf
   auto& m = ctx.metrics();
   m["communication"] = {{"concurrent_volume_bytes", volume}, {"steps", steps}};
   m["load_imbalance"] = load_imbalance(merge_loads);
-  // Bytes of the records on the wire (docs/papers.md): a winning pixel (x 2, rgb 3, z 4, and
-  // zcube's triangle id 4 for the depth tie-break), a full z-buffer location (rgb, z, id), a dealt
-  // polygon with its three world vertices, a scanline count.
-  m["wire_bytes"] = {{"pixel", kWirePixelBytes},
-                     {"zbuffer_location", 11},
-                     {"triangle", sizeof(TriWorld)},
-                     {"count_entry", sizeof(std::int32_t)}};
+  // Bytes of the records the network and node memory are charged (records.hpp, docs/papers.md),
+  // and of zcube's payloads (+ the triangle id of the depth tie-break; the dealt polygon's id,
+  // material and vertex ids).
+  m["wire_bytes"] = {{"pixel", records::kurc::kWinningPixel},
+                     {"zbuffer_location", records::kurc::kZbufferLocation},
+                     {"triangle", records::kurc::kPolygon},
+                     {"count_entry", records::kurc::kCountEntry}};
+  m["payload_bytes"] = {{"pixel", kWirePixelBytes},
+                        {"zbuffer_location", Framebuffer::kLocationBytes},
+                        {"triangle", sizeof(TriWorld)},
+                        {"count_entry", sizeof(std::int32_t)}};
   m["kurc"] = {{"tpg", total_tpg},
                {"tpf", img.covered()},
                {"merge_loads", merge_loads},
@@ -72,8 +76,9 @@ void output(NodeContext& ctx, const NodeRenderer& nr, MergeScheme& scheme,
   auto ph = ctx.phase("output");
   Comm& c = ctx.comm();
   Counters packed;
-  Bytes part = serialize_sparse(scheme.final_pixels(packed));
-  packed.bytes_packed += part.size();
+  // Sent as the paper's records (9-byte pixels); zcube's copies are counted as it makes them.
+  Message part = sparse_message(serialize_sparse(scheme.final_pixels(packed)));
+  packed.bytes_packed += part.payload.size();
   ctx.charge(packed);
   auto parts = coll::gatherv(c, 0, std::move(part));
   auto step_max = coll::allreduce(c, measures.step_bytes, coll::Op::Max);
@@ -84,7 +89,8 @@ void output(NodeContext& ctx, const NodeRenderer& nr, MergeScheme& scheme,
   Framebuffer img = nr.make_framebuffer(RowSet::all(nr.height()));
   Counters w;
   w.pixels_cleared = img.pixel_count();
-  for (const auto& b : parts) {
+  for (const auto& m : parts) {
+    const Bytes& b = m.payload;
     scatter_active(deserialize_sparse(b.data(), b.size(), nr.width(), 0, nr.height()), img);
     w.bytes_packed += 2 * b.size();
   }

@@ -4,6 +4,7 @@
 
 #include <unordered_map>
 
+#include "algo/records.hpp"
 #include "comm/collectives.hpp"
 #include "comm/wire.hpp"
 
@@ -14,7 +15,8 @@ NodeTriangles distribute_triangles(NodeContext& ctx) {
   const Scene& scene = ctx.scene();
   const int P = ctx.nodes();
   const bool textured = scene.textured();
-  std::vector<Bytes> parts(P), uv_parts(P);
+  std::vector<Message> parts(P);
+  std::vector<Bytes> uv_parts(P);
   if (ctx.rank() == 0) {
     std::vector<std::vector<TriWorld>> per(P);
     std::vector<std::vector<TriUV>> per_uv(P);
@@ -24,16 +26,17 @@ NodeTriangles distribute_triangles(NodeContext& ctx) {
       if (textured)
         per_uv[i % P].push_back({{scene.uvs[t.v[0]], scene.uvs[t.v[1]], scene.uvs[t.v[2]]}});
     }
+    // Each polygon is charged as the paper's record (records.hpp), not zcube's TriWorld.
     for (int k = 0; k < P; ++k) {
-      parts[k] = pack(per[k]);
+      parts[k] = {pack(per[k]), per[k].size() * records::kurc::kPolygon};
       if (textured) uv_parts[k] = pack(per_uv[k]);
     }
-    ctx.charge_packing(scene.triangles.size() * sizeof(TriWorld));
+    ctx.charge_packing(scene.triangles.size() * records::kurc::kPolygon);
   }
   NodeTriangles mine;
-  mine.tris = unpack<TriWorld>(coll::scatterv(ctx.comm(), 0, std::move(parts)));
+  mine.tris = unpack<TriWorld>(coll::scatterv(ctx.comm(), 0, std::move(parts)).payload);
   if (textured) mine.uvs = unpack<TriUV>(coll::scatterv(ctx.comm(), 0, std::move(uv_parts)));
-  ctx.alloc(double(mine.tris.size() * sizeof(TriWorld) + mine.uvs.size() * sizeof(TriUV)),
+  ctx.alloc(double(mine.tris.size() * records::kurc::kPolygon + mine.uvs.size() * sizeof(TriUV)),
             "triangles");
   return mine;
 }

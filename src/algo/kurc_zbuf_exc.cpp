@@ -18,7 +18,7 @@ public:
   void local_zbuffer(NodeContext& ctx, const NodeRenderer& nr, const NodeSpans& spans,
                      Counters& w) override {
     full_ = nr.make_framebuffer(RowSet::all(nr.height()));
-    ctx.alloc(double(full_.bytes()), "full z-buffer");
+    ctx.alloc(double(full_.pixel_count() * records::kurc::kZbufferLocation), "full z-buffer");
     w.pixels_cleared = std::uint64_t(nr.width()) * nr.height();
     for (int y = 0; y < nr.height(); ++y)
       for (std::uint32_t s = spans.lists.row_begin[y]; s < spans.lists.row_begin[y + 1]; ++s)
@@ -38,10 +38,12 @@ public:
       // The leaving half is a contiguous band of the z-buffer, sent in place (zcube's copy of its
       // three arrays into one payload is an artefact); the arriving half needs a buffer of its own.
       const std::size_t W = std::size_t(full_.width());
-      Bytes out = full_.pack_locations(sy0 * W, (sy1 - sy0) * W);
-      m.step_bytes.push_back(double(out.size()));
+      // Charged as the paper's locations (z and shading, records.hpp), without zcube's triangle id.
+      const std::size_t n_out = (sy1 - sy0) * W;
+      Message out{full_.pack_locations(sy0 * W, n_out), n_out * records::kurc::kZbufferLocation};
+      m.step_bytes.push_back(double(out.charged));
       const int ky0 = top ? y0_ : mid, ky1 = top ? mid : y1_;
-      const double rx = double(Framebuffer::kLocationBytes) * double(ky1 - ky0) * double(W);
+      const double rx = double(records::kurc::kZbufferLocation) * double(ky1 - ky0) * double(W);
       ctx.alloc(rx, "receive buffer");
       auto h = c.isend(partner, kTagZbuf + i, std::move(out));
       Bytes in = c.recv(partner, kTagZbuf + i);

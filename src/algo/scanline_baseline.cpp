@@ -4,6 +4,7 @@
 // vertex transformed once, spans into x_min-sorted scanline lists, the modified scanline z-buffer.
 #include "algo/scanline_baseline.hpp"
 
+#include "algo/records.hpp"
 #include "raster/active_pixels.hpp"
 #include "raster/renderer.hpp"
 #include "util/error.hpp"
@@ -12,9 +13,8 @@ namespace zc {
 
 namespace {
 
-// A polygon as the node holds it (the schemes' dealt record: id, material, vertex ids, and three
-// world vertices of six floats).
-constexpr double kPolygonBytes = 4 + 4 + 3 * 4 + 3 * sizeof(Vertex);
+// A polygon as the node holds it: the schemes' dealt record (records.hpp).
+constexpr double kPolygonBytes = records::kurc::kPolygon;
 
 void scanline_node(NodeContext& ctx) {
   if (ctx.rank() != 0) return;
@@ -53,7 +53,9 @@ void scanline_node(NodeContext& ctx) {
     Counters w;
     ctx.alloc(double(W) * 4, "MSA");
     wpa = zbuffer_spans(lists, batch, nr.shade(), W, w);
-    ctx.alloc(double(wpa.bytes()), "WPA");
+    ctx.alloc(double(wpa.count() * records::kurc::kWinningPixel +
+                     wpa.row_begin.size() * records::kurc::kCountEntry),
+              "WPA");
     ctx.charge(w);
   }
   ctx.end_timed_region();

@@ -1,5 +1,6 @@
 #include "algo/sequential.hpp"
 
+#include "algo/records.hpp"
 #include "geometry/camera_path.hpp"
 #include "raster/renderer.hpp"
 #include "raster/zbuffer.hpp"
@@ -12,13 +13,18 @@ void sequential_node(NodeContext& ctx) {
   if (ctx.rank() != 0) return;
   const Scene& base = ctx.scene();
   const int frames = ctx.options().frames;
-  // The scene it renders: vertices of six reals, triangles of three vertex numbers (Charles et
-  // al. §4's records).
-  ctx.alloc(double(base.vertices.size() * sizeof(Vertex) + base.triangles.size() * 12), "scene");
+  // The scene it renders in Charles et al.'s records (§4, records.hpp): vertices of six reals,
+  // triangles of three vertex numbers.
+  ctx.alloc(double(base.vertices.size() * records::charles::kVertex +
+                   base.triangles.size() * records::charles::kTriangle),
+            "scene");
   for (int f = 0; f < frames; ++f) {
     const NodeRenderer nr(base, camera_at_frame(base.camera, f, frames));
-    const double fb_bytes = double(base.width) * base.height * 11.0; // rgb + depth + id
-    const double pv_bytes = double(base.vertices.size()) * sizeof(ProjectedVertex);
+    // The frame buffer (depth and colour) and the projected vertices, as the paper's records.
+    const double fb_bytes =
+        double(base.width) * base.height * double(records::charles::kZbufferLocation);
+    const double pv_bytes =
+        double(base.vertices.size()) * double(records::charles::kProjectedVertex);
     ctx.alloc(fb_bytes + pv_bytes, "frame buffer and projected vertices");
     std::vector<ProjectedVertex> pv(base.vertices.size());
     {

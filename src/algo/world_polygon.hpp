@@ -1,8 +1,9 @@
 #pragma once
 // The one polygon record that travels between nodes with its WORLD-space vertices (Blazek's
 // polygon packets and forwarded polygons, Kurc et al.'s triangles dealt to the nodes): its global
-// scene id (the depth tie-break), material and three vertices with normals, 80 bytes. The
-// receiving node projects and shades them.
+// scene id (the depth tie-break), material and three vertices with normals, 80 bytes of payload
+// (the network is charged each paper's polygon record, records.hpp). The receiving node projects
+// and shades them.
 #include <cstdint>
 
 #include "scene/scene.hpp"

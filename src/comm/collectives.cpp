@@ -9,32 +9,42 @@
 namespace zc::coll {
 namespace {
 
-// Several blocks in one payload: u32 count, then per block (i32 owner, u64 size), then the data.
+// Several blocks in one message: u32 count, then per block (i32 owner, u64 size, u64 charged),
+// then the data. The message is charged its framing as a program would send it (the count, and an
+// owner and a length a block: 4 + 12 bytes a block) plus the sum of the blocks' charged sizes; the
+// charged size in the payload is zcube's, so that the node a block reaches charges it again.
 struct Block {
   int owner;
-  Bytes data;
+  Message data;
 };
 
-Bytes pack_blocks(const std::vector<Block>& blocks) {
-  std::size_t total = 4 + 12 * blocks.size(); // sized once: one allocation, no zero-fill
-  for (const auto& k : blocks)
-    total += k.data.size();
+constexpr std::size_t kFrameBytes = 4, kBlockFrameBytes = 12;
+
+Message pack_blocks(const std::vector<Block>& blocks) {
+  std::size_t total = 4 + 20 * blocks.size(); // sized once: one allocation, no zero-fill
+  std::size_t charged = kFrameBytes + kBlockFrameBytes * blocks.size();
+  for (const auto& k : blocks) {
+    total += k.data.payload.size();
+    charged += k.data.charged;
+  }
   Bytes b;
   b.reserve(total);
   const std::uint32_t n = std::uint32_t(blocks.size());
   append(b, &n, 1);
   for (const auto& k : blocks) {
     const std::int32_t o = k.owner;
-    const std::uint64_t s = k.data.size();
+    const std::uint64_t s = k.data.payload.size(), c = k.data.charged;
     append(b, &o, 1);
     append(b, &s, 1);
+    append(b, &c, 1);
   }
   for (const auto& k : blocks)
-    b.insert(b.end(), k.data.begin(), k.data.end());
-  return b;
+    b.insert(b.end(), k.data.payload.begin(), k.data.payload.end());
+  return {std::move(b), charged};
 }
 
-std::vector<Block> unpack_blocks(const Bytes& b) {
+std::vector<Block> unpack_blocks(const Message& m) {
+  const Bytes& b = m.payload;
   std::size_t at = 0;
   auto take = [&](void* dst, std::size_t n) {
     if (at + n > b.size()) throw std::runtime_error("collective: truncated block payload");
@@ -47,15 +57,34 @@ std::vector<Block> unpack_blocks(const Bytes& b) {
   std::vector<std::uint64_t> sizes(n);
   for (std::uint32_t i = 0; i < n; ++i) {
     std::int32_t o;
+    std::uint64_t c;
     take(&o, 4);
     take(&sizes[i], 8);
+    take(&c, 8);
     blocks[i].owner = o;
+    blocks[i].data.charged = std::size_t(c);
   }
   for (std::uint32_t i = 0; i < n; ++i) {
-    blocks[i].data.resize(sizes[i]);
-    if (sizes[i]) take(blocks[i].data.data(), sizes[i]);
+    blocks[i].data.payload.resize(sizes[i]);
+    if (sizes[i]) take(blocks[i].data.payload.data(), sizes[i]);
   }
   return blocks;
+}
+
+std::vector<Message> uncharged_all(std::vector<Bytes> parts) {
+  std::vector<Message> m;
+  m.reserve(parts.size());
+  for (auto& b : parts)
+    m.push_back(uncharged(std::move(b)));
+  return m;
+}
+
+std::vector<Bytes> payloads(std::vector<Message> m) {
+  std::vector<Bytes> b;
+  b.reserve(m.size());
+  for (auto& x : m)
+    b.push_back(std::move(x.payload));
+  return b;
 }
 
 bool cube(const Comm& c) {
@@ -155,7 +184,7 @@ template <class T> std::vector<T> allreduce_impl(Comm& c, std::vector<T> v, Op o
 
 } // namespace
 
-Bytes broadcast(Comm& c, int root, Bytes data, int tag) {
+Message broadcast(Comm& c, int root, Message data, int tag) {
   const int p = P(c), r = c.rank();
   if (p == 1) return data;
   const int rel = rel_of(c, r, root);
@@ -165,7 +194,7 @@ Bytes broadcast(Comm& c, int root, Bytes data, int tag) {
       if (rel < bit) {
         c.send(abs_of(c, rel | bit, root), tag, data);
       } else if (rel < 2 * bit) {
-        data = c.recv(abs_of(c, rel ^ bit, root), tag);
+        data = c.recv_message(abs_of(c, rel ^ bit, root), tag);
       }
     }
     return data;
@@ -179,12 +208,16 @@ Bytes broadcast(Comm& c, int root, Bytes data, int tag) {
     return data;
   }
   const bool right = rel <= R;
-  data = c.recv(abs_of(c, right ? rel - 1 : (rel + 1) % p, root), tag);
+  data = c.recv_message(abs_of(c, right ? rel - 1 : (rel + 1) % p, root), tag);
   if (right ? rel < R : rel > R + 1) c.send(abs_of(c, right ? rel + 1 : rel - 1, root), tag, data);
   return data;
 }
 
-Bytes scatterv(Comm& c, int root, std::vector<Bytes> parts, int tag) {
+Bytes broadcast(Comm& c, int root, Bytes data, int tag) {
+  return broadcast(c, root, uncharged(std::move(data)), tag).payload;
+}
+
+Message scatterv(Comm& c, int root, std::vector<Message> parts, int tag) {
   const int p = P(c), r = c.rank();
   if (r == root && int(parts.size()) != p)
     throw std::invalid_argument("scatterv: the root needs one block per node");
@@ -206,7 +239,7 @@ Bytes scatterv(Comm& c, int root, std::vector<Bytes> parts, int tag) {
         c.send(abs_of(c, rel | bit, root), tag, pack_blocks(give));
         mine = std::move(keep);
       } else if ((rel & (2 * bit - 1)) == bit) {
-        mine = unpack_blocks(c.recv(abs_of(c, rel ^ bit, root), tag));
+        mine = unpack_blocks(c.recv_message(abs_of(c, rel ^ bit, root), tag));
       }
     }
   } else {
@@ -222,7 +255,7 @@ Bytes scatterv(Comm& c, int root, std::vector<Bytes> parts, int tag) {
       if (h) h->wait();
     } else {
       const bool right = rel <= R;
-      mine = unpack_blocks(c.recv(abs_of(c, right ? rel - 1 : (rel + 1) % p, root), tag));
+      mine = unpack_blocks(c.recv_message(abs_of(c, right ? rel - 1 : (rel + 1) % p, root), tag));
       std::vector<Block> rest;
       for (auto& b : mine)
         if (b.owner != rel) rest.push_back(std::move(b));
@@ -235,9 +268,13 @@ Bytes scatterv(Comm& c, int root, std::vector<Bytes> parts, int tag) {
   throw std::logic_error("scatterv: block lost");
 }
 
-std::vector<Bytes> gatherv(Comm& c, int root, Bytes data, int tag) {
+Bytes scatterv(Comm& c, int root, std::vector<Bytes> parts, int tag) {
+  return scatterv(c, root, uncharged_all(std::move(parts)), tag).payload;
+}
+
+std::vector<Message> gatherv(Comm& c, int root, Message data, int tag) {
   const int p = P(c), r = c.rank();
-  std::vector<Bytes> out;
+  std::vector<Message> out;
   if (p == 1) {
     out.push_back(std::move(data));
     return out;
@@ -252,7 +289,7 @@ std::vector<Bytes> gatherv(Comm& c, int root, Bytes data, int tag) {
         c.send(abs_of(c, rel ^ bit, root), tag, pack_blocks(mine));
         return {};
       }
-      for (auto& b : unpack_blocks(c.recv(abs_of(c, rel ^ bit, root), tag)))
+      for (auto& b : unpack_blocks(c.recv_message(abs_of(c, rel ^ bit, root), tag)))
         mine.push_back(std::move(b));
     }
   } else {
@@ -260,16 +297,17 @@ std::vector<Bytes> gatherv(Comm& c, int root, Bytes data, int tag) {
     if (rel != 0) {
       const bool right = rel <= R;
       if (right ? rel < R : rel > R + 1)
-        for (auto& b : unpack_blocks(c.recv(abs_of(c, right ? rel + 1 : rel - 1, root), tag)))
+        for (auto& b :
+             unpack_blocks(c.recv_message(abs_of(c, right ? rel + 1 : rel - 1, root), tag)))
           mine.push_back(std::move(b));
       c.send(abs_of(c, right ? rel - 1 : (rel + 1) % p, root), tag, pack_blocks(mine));
       return {};
     }
     if (R >= 1)
-      for (auto& b : unpack_blocks(c.recv(abs_of(c, 1, root), tag)))
+      for (auto& b : unpack_blocks(c.recv_message(abs_of(c, 1, root), tag)))
         mine.push_back(std::move(b));
     if (p - 1 > R)
-      for (auto& b : unpack_blocks(c.recv(abs_of(c, p - 1, root), tag)))
+      for (auto& b : unpack_blocks(c.recv_message(abs_of(c, p - 1, root), tag)))
         mine.push_back(std::move(b));
   }
   out.resize(p);
@@ -278,15 +316,19 @@ std::vector<Bytes> gatherv(Comm& c, int root, Bytes data, int tag) {
   return out;
 }
 
-std::vector<Bytes> allgatherv(Comm& c, Bytes data, int tag) {
+std::vector<Bytes> gatherv(Comm& c, int root, Bytes data, int tag) {
+  return payloads(gatherv(c, root, uncharged(std::move(data)), tag));
+}
+
+std::vector<Message> allgatherv(Comm& c, Message data, int tag) {
   const int p = P(c), r = c.rank();
-  std::vector<Bytes> out(p);
+  std::vector<Message> out(p);
   if (cube(c)) {
     std::vector<Block> mine{{r, std::move(data)}};
     for (int i = 0; (1 << i) < p; ++i) {
       const int partner = r ^ (1 << i);
       auto h = c.isend(partner, tag, pack_blocks(mine));
-      for (auto& b : unpack_blocks(c.recv(partner, tag)))
+      for (auto& b : unpack_blocks(c.recv_message(partner, tag)))
         mine.push_back(std::move(b));
       h->wait();
     }
@@ -301,11 +343,15 @@ std::vector<Bytes> allgatherv(Comm& c, Bytes data, int tag) {
   for (int s = 1; s < p; ++s) {
     auto h = c.isend(right, tag, out[have]);
     const int from = (r - s + p) % p;
-    out[from] = c.recv(left, tag);
+    out[from] = c.recv_message(left, tag);
     h->wait();
     have = from;
   }
   return out;
+}
+
+std::vector<Bytes> allgatherv(Comm& c, Bytes data, int tag) {
+  return payloads(allgatherv(c, uncharged(std::move(data)), tag));
 }
 
 std::vector<std::int64_t> reduce(Comm& c, int root, std::vector<std::int64_t> v, Op op, int tag) {
@@ -351,10 +397,10 @@ std::vector<std::int64_t> prefix_sum(Comm& c, std::vector<std::int64_t> v, int t
   return v;
 }
 
-std::vector<Bytes> alltoallv(Comm& c, std::vector<Bytes> out, AllToAll how, int tag) {
+std::vector<Message> alltoallv(Comm& c, std::vector<Message> out, AllToAll how, int tag) {
   const int p = P(c), r = c.rank();
   if (int(out.size()) != p) throw std::invalid_argument("alltoallv: one block per node");
-  std::vector<Bytes> in(p);
+  std::vector<Message> in(p);
   in[r] = std::move(out[r]);
   if (how == AllToAll::Direct) {
     std::vector<SendHandle> hs;
@@ -364,7 +410,7 @@ std::vector<Bytes> alltoallv(Comm& c, std::vector<Bytes> out, AllToAll how, int 
     }
     for (int k = 1; k < p; ++k) {
       const int s = (r - k + p) % p;
-      in[s] = c.recv(s, tag);
+      in[s] = c.recv_message(s, tag);
     }
     for (auto& h : hs)
       h->wait();
@@ -374,10 +420,14 @@ std::vector<Bytes> alltoallv(Comm& c, std::vector<Bytes> out, AllToAll how, int 
     const int to = cube(c) ? (r ^ k) : (r + k) % p;
     const int from = cube(c) ? (r ^ k) : (r - k + p) % p;
     auto h = c.isend(to, tag, std::move(out[to]));
-    in[from] = c.recv(from, tag);
+    in[from] = c.recv_message(from, tag);
     h->wait();
   }
   return in;
+}
+
+std::vector<Bytes> alltoallv(Comm& c, std::vector<Bytes> out, AllToAll how, int tag) {
+  return payloads(alltoallv(c, uncharged_all(std::move(out)), how, tag));
 }
 
 void barrier(Comm& c, int tag) {

@@ -1,8 +1,14 @@
 #pragma once
 // The communication layer, in the spirit of PPCM (Charles et al. §3): a topology-aware
 // point-to-point interface on which the collectives are written once for every backend. It holds
-// no SimGrid type: the SimGrid backend (src/sim) implements it now, an MPI backend can later.
-// Payloads are the real data; their size is what the network is charged.
+// no SimGrid type: the SimGrid backend (src/sim) implements it, and the MPI backend (src/mpi).
+//
+// Payloads are the real data. What the network is charged is a message's `charged` size: by
+// default the payload's size, or the size of the records the modelled machine's program holds and
+// sends (docs/papers.md, "Records"), when zcube's payload carries bytes that program never sent
+// (a triangle id for the depth tie-break, clip-space floats). The charged size travels with the
+// message, so a collective that forwards it charges what it received.
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -12,6 +18,17 @@
 namespace zc {
 
 using Bytes = std::vector<std::uint8_t>;
+
+// A payload and the bytes the modelled machine is charged for it.
+struct Message {
+  Bytes payload;
+  std::size_t charged = 0;
+};
+// A message charged as its payload's size.
+inline Message uncharged(Bytes payload) {
+  const std::size_t n = payload.size();
+  return {std::move(payload), n};
+}
 
 constexpr int kAnySource = -1;
 
@@ -35,13 +52,19 @@ public:
   int dimension() const { return topology() == Topology::Cube ? log2_exact(size()) : 0; }
   int neighbour(int channel) const { return zc::neighbour(topology(), size(), rank(), channel); }
 
-  // Blocking send: returns when the message has been delivered.
-  virtual void send(int dst, int tag, Bytes data) = 0;
   // Asynchronous send: the transfer proceeds while the caller continues; wait() on the handle.
-  virtual SendHandle isend(int dst, int tag, Bytes data) = 0;
+  virtual SendHandle isend(int dst, int tag, Message m) = 0;
   // Blocking receive of the next message from src (or kAnySource) with this tag. Messages from one
   // source with one tag arrive in the order they were sent. `from` receives the actual source.
-  virtual Bytes recv(int src, int tag, int* from = nullptr) = 0;
+  virtual Message recv_message(int src, int tag, int* from = nullptr) = 0;
+
+  SendHandle isend(int dst, int tag, Bytes data) {
+    return isend(dst, tag, uncharged(std::move(data)));
+  }
+  // Blocking send: returns when the message has been delivered.
+  virtual void send(int dst, int tag, Message m) { isend(dst, tag, std::move(m))->wait(); }
+  void send(int dst, int tag, Bytes data) { send(dst, tag, uncharged(std::move(data))); }
+  Bytes recv(int src, int tag, int* from = nullptr) { return recv_message(src, tag, from).payload; }
 
   // Virtual (or, for a real backend, wall-clock) time in seconds.
   virtual double now() const = 0;

@@ -1,6 +1,7 @@
 #pragma once
-// Packing trivially copyable records into message payloads and back: the bytes that travel are
-// exactly the records' bytes, so the size charged to the network is the real data size.
+// Packing trivially copyable records into message payloads and back: the payload holds exactly the
+// records' bytes. What the network is charged for them is the message's charged size (comm.hpp):
+// the payload's size unless the sender gives the modelled program's record size.
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>

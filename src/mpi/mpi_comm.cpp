@@ -4,6 +4,7 @@
 
 #include <climits>
 #include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -81,9 +82,9 @@ void MpiComm::check_peer(int peer, int tag) const {
                              std::to_string(tag_ub_));
 }
 
-void MpiComm::send(int dst, int tag, Bytes data) {
+void MpiComm::send(int dst, int tag, Message m) {
   const double t = clock();
-  in_flight_.push_back(isend(dst, tag, std::move(data)));
+  in_flight_.push_back(isend(dst, tag, std::move(m)));
   reap();
   const double t1 = clock();
   stats_.comm_s += t1 - t;
@@ -107,17 +108,21 @@ void MpiComm::flush() {
   in_flight_.clear();
 }
 
-SendHandle MpiComm::isend(int dst, int tag, Bytes data) {
+SendHandle MpiComm::isend(int dst, int tag, Message m) {
   check_peer(dst, tag);
-  stats_.bytes_sent += data.size();
-  ++stats_.messages;
+  stats_.count_send(m.payload.size(), m.charged);
   if (stats_.log)
     stats_.log->sends.push_back(
-        {dst, tag, data.size(), message_hops(topology_, nodes_, rank_, dst), now()});
+        {dst, tag, m.charged, message_hops(topology_, nodes_, rank_, dst), now()});
+  const std::uint64_t charged = m.charged;
+  Bytes& data = m.payload;
+  const std::size_t at = data.size();
+  data.resize(at + sizeof charged);
+  std::memcpy(data.data() + at, &charged, sizeof charged);
   return std::make_unique<MpiSend>(std::move(data), dst, tag, world_);
 }
 
-Bytes MpiComm::recv(int src, int tag, int* from) {
+Message MpiComm::recv_message(int src, int tag, int* from) {
   if (src != kAnySource) check_peer(src, tag);
   const double t = clock();
   MPI_Status st;
@@ -135,7 +140,11 @@ Bytes MpiComm::recv(int src, int tag, int* from) {
     stats_.log->recvs.push_back({st.MPI_SOURCE, tag, arrived - t0_, t1 - t0_});
   }
   if (from) *from = st.MPI_SOURCE;
-  return b;
+  std::uint64_t charged = 0;
+  if (b.size() < sizeof charged) throw std::runtime_error("MPI message without its charged size");
+  std::memcpy(&charged, b.data() + b.size() - sizeof charged, sizeof charged);
+  b.resize(b.size() - sizeof charged);
+  return {std::move(b), std::size_t(charged)};
 }
 
 } // namespace zc

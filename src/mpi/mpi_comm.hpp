@@ -20,9 +20,13 @@ public:
   int rank() const override { return rank_; }
   int size() const override { return nodes_; }
   Topology topology() const override { return topology_; }
-  void send(int dst, int tag, Bytes data) override;
-  SendHandle isend(int dst, int tag, Bytes data) override;
-  Bytes recv(int src, int tag, int* from = nullptr) override;
+  using Comm::isend;
+  using Comm::send;
+  // The payload travels with its charged size appended (8 bytes), so that a receiver forwarding
+  // it (a collective) charges what the sender was charged; the stats record the charged size.
+  void send(int dst, int tag, Message m) override;
+  SendHandle isend(int dst, int tag, Message m) override;
+  Message recv_message(int src, int tag, int* from = nullptr) override;
   double now() const override { return clock() - t0_; }
 
   // Restarts the clock: every rank calls it after a barrier, so phase times share one origin.

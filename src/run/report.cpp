@@ -11,6 +11,18 @@
 
 namespace zc {
 
+void to_json(nlohmann::json& j, const Traffic& t) {
+  j = {{"charged_bytes", t.charged_bytes},
+       {"payload_bytes", t.payload_bytes},
+       {"messages", t.messages}};
+}
+
+void from_json(const nlohmann::json& j, Traffic& t) {
+  t.charged_bytes = j.at("charged_bytes");
+  t.payload_bytes = j.at("payload_bytes");
+  t.messages = j.at("messages");
+}
+
 void to_json(nlohmann::json& j, const NodeRecord& r) {
   nlohmann::json work = nlohmann::json::object();
   for (const auto& [n, w] : r.phase_work)
@@ -20,7 +32,9 @@ void to_json(nlohmann::json& j, const NodeRecord& r) {
        {"comm_s", r.stats.comm_s},
        {"finish_s", r.stats.finish_s},
        {"bytes_sent", r.stats.bytes_sent},
+       {"payload_bytes_sent", r.stats.payload_bytes_sent},
        {"messages", r.stats.messages},
+       {"phase_traffic", r.stats.phase_traffic},
        {"peak_memory", r.stats.peak_memory},
        {"timed", r.stats.timed},
        {"timed_start_s", r.stats.timed_start_s},
@@ -40,7 +54,9 @@ void from_json(const nlohmann::json& j, NodeRecord& r) {
   r.stats.comm_s = j.at("comm_s");
   r.stats.finish_s = j.at("finish_s");
   r.stats.bytes_sent = j.at("bytes_sent");
+  r.stats.payload_bytes_sent = j.at("payload_bytes_sent");
   r.stats.messages = j.at("messages");
+  r.stats.phase_traffic = j.at("phase_traffic").get<std::map<std::string, Traffic>>();
   r.stats.peak_memory = j.at("peak_memory");
   r.stats.timed = j.value("timed", false);
   r.stats.timed_start_s = j.value("timed_start_s", 0.0);
@@ -92,6 +108,7 @@ void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, 
   for (const auto& n : order) {
     double mx = 0, sum = 0, mn = 1e300;
     int cnt = 0;
+    Traffic sent; // over every node
     for (const auto& c : nodes) {
       auto it = c.phase_totals.find(n);
       if (it == c.phase_totals.end()) continue;
@@ -99,17 +116,26 @@ void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, 
       mn = std::min(mn, it->second);
       sum += it->second;
       ++cnt;
+      if (auto t = c.stats.phase_traffic.find(n); t != c.stats.phase_traffic.end())
+        sent += t->second;
     }
-    j["phases"].push_back({{"name", n}, {"max_s", mx}, {"mean_s", sum / cnt}, {"min_s", mn}});
+    j["phases"].push_back({{"name", n},
+                           {"max_s", mx},
+                           {"mean_s", sum / cnt},
+                           {"min_s", mn},
+                           {"messages", sent.messages},
+                           {"charged_bytes", sent.charged_bytes},
+                           {"payload_bytes", sent.payload_bytes}});
   }
   Counters total;
-  std::uint64_t msgs = 0, bytes = 0;
+  std::uint64_t msgs = 0, bytes = 0, payload = 0;
   j["per_node"] = nlohmann::json::array();
   for (const NodeRecord& rec : nodes) {
     const NodeStats& s = rec.stats;
     total += rec.work;
     msgs += s.messages;
     bytes += s.bytes_sent;
+    payload += s.payload_bytes_sent;
     nlohmann::json ph = nlohmann::json::object();
     for (const auto& [n, t] : rec.phase_totals)
       ph[n] = t;
@@ -126,6 +152,7 @@ void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, 
                              {"comm_s", s.comm_s},
                              {"idle_s", std::max(0.0, total_s - s.busy_s - s.comm_s)},
                              {"bytes_sent", s.bytes_sent},
+                             {"payload_bytes_sent", s.payload_bytes_sent},
                              {"messages", s.messages},
                              {"peak_memory_bytes", s.peak_memory},
                              {"phases", ph},
@@ -158,8 +185,11 @@ void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, 
     if (s.timed) timed_s = std::max(timed_s, s.timed_until_s() - s.timed_start_s);
   }
   if (timed_s >= 0) j["timed_s"] = timed_s;
-  j["communication"] = {
-      {"messages", msgs}, {"bytes", bytes}, {"concurrent_volume_bytes", max_sent}};
+  // bytes: what the modelled machine's network was charged; payload_bytes: zcube's payloads.
+  j["communication"] = {{"messages", msgs},
+                        {"bytes", bytes},
+                        {"payload_bytes", payload},
+                        {"concurrent_volume_bytes", max_sent}};
   j["counters"] = total;
   j["load_imbalance"] = busy_mean > 0 ? (busy_max - busy_min) / busy_mean : 0.0;
   std::vector<const EventLog*> logs;

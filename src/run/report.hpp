@@ -16,10 +16,27 @@
 
 namespace zc {
 
+// What a node sent: the bytes the modelled machine is charged (its program's records, comm.hpp)
+// and the bytes of zcube's payloads.
+struct Traffic {
+  std::uint64_t charged_bytes = 0, payload_bytes = 0, messages = 0;
+  Traffic& operator+=(const Traffic& o) {
+    charged_bytes += o.charged_bytes;
+    payload_bytes += o.payload_bytes;
+    messages += o.messages;
+    return *this;
+  }
+};
+void to_json(nlohmann::json& j, const Traffic& t);
+void from_json(const nlohmann::json& j, Traffic& t);
+
 // Counters of one node's run, whatever the backend.
 struct NodeStats {
   double busy_s = 0, comm_s = 0, finish_s = 0;
-  std::uint64_t bytes_sent = 0, messages = 0;
+  std::uint64_t bytes_sent = 0, messages = 0; // bytes_sent: charged bytes
+  std::uint64_t payload_bytes_sent = 0;
+  std::string phase;                            // the innermost open phase ("" outside every phase)
+  std::map<std::string, Traffic> phase_traffic; // what was sent in each phase
   double memory = 0, peak_memory = 0;
   std::shared_ptr<EventLog> log; // the node's timeline; null unless one was asked for
   bool timed = false;            // the node started the paper's timed region (start_timed_region)
@@ -28,6 +45,13 @@ struct NodeStats {
   double timed_end_s = 0;        // when
   // The end of the node's timed region: end_timed_region's time, else the node's finish.
   double timed_until_s() const { return timed_ended ? timed_end_s : finish_s; }
+  // A send of `payload` bytes charged as `charged` (the backends call it).
+  void count_send(std::size_t payload, std::size_t charged) {
+    bytes_sent += charged;
+    payload_bytes_sent += payload;
+    ++messages;
+    phase_traffic[phase] += Traffic{charged, payload, 1};
+  }
 };
 
 // A picture (or, partial, rows of one) handed over by a node.

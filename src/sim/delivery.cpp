@@ -72,14 +72,15 @@ void Delivery::arrived(Transit& m) {
   notify(waiters_[m.src], m);
 }
 
-TransitPtr Delivery::post(int src, int dst, int tag, Bytes data) {
+TransitPtr Delivery::post(int src, int dst, int tag, Message msg) {
   auto m = std::make_shared<Transit>();
   m->src = src;
   m->dst = dst;
   m->tag = tag;
-  m->data = std::move(data);
+  m->data = std::move(msg.payload);
+  m->charged = msg.charged;
   m->sent_at = sg::Engine::get_clock();
-  const double bytes = double(m->data.size());
+  const double bytes = double(m->charged);
   if (fidelity_ == Fidelity::Analytic && !events_driven_) {
     double t = m->sent_at;
     for (const Hold& h : net_.holds(src, dst, bytes))

@@ -28,8 +28,9 @@ class Delivery {
 public:
   Delivery(SimNetwork& net, Fidelity fidelity, std::vector<simgrid::s4u::Host*> hosts);
 
-  // Sends at the current virtual time; the message's arrival is set now or later.
-  TransitPtr post(int src, int dst, int tag, Bytes data);
+  // Sends at the current virtual time; the message's arrival is set now or later. The network is
+  // charged m.charged bytes, whatever the payload's size.
+  TransitPtr post(int src, int dst, int tag, Message m);
   // Blocks rank `self` until message m has arrived (a sender's completion).
   void await_arrival(int self, const Transit& m);
   // Blocks rank `self` until a message from src (or kAnySource) with this tag can be taken.

@@ -39,22 +39,17 @@ void SimComm::check_rank(int r, const char* what) const {
                             std::to_string(size()));
 }
 
-SendHandle SimComm::isend(int dst, int tag, Bytes data) {
+SendHandle SimComm::isend(int dst, int tag, Message msg) {
   check_rank(dst, "send");
-  stats_.bytes_sent += data.size();
-  stats_.messages += 1;
+  stats_.count_send(msg.payload.size(), msg.charged);
   if (stats_.log)
     stats_.log->sends.push_back(
-        {dst, tag, data.size(), message_hops(topology_, nodes_, rank_, dst), now()});
+        {dst, tag, msg.charged, message_hops(topology_, nodes_, rank_, dst), now()});
   return std::make_unique<SimSendRequest>(delivery_, rank_,
-                                          delivery_.post(rank_, dst, tag, std::move(data)), stats_);
+                                          delivery_.post(rank_, dst, tag, std::move(msg)), stats_);
 }
 
-void SimComm::send(int dst, int tag, Bytes data) {
-  isend(dst, tag, std::move(data))->wait();
-}
-
-Bytes SimComm::recv(int src, int tag, int* from) {
+Message SimComm::recv_message(int src, int tag, int* from) {
   if (src != kAnySource) check_rank(src, "recv");
   const double t0 = sg::Engine::get_clock();
   TransitPtr m = delivery_.receive(rank_, src, tag);
@@ -65,7 +60,7 @@ Bytes SimComm::recv(int src, int tag, int* from) {
     stats_.log->activity(Activity::Wait, t0, t1);
     stats_.log->recvs.push_back({m->src, m->tag, m->arrival, t1});
   }
-  return std::move(m->data);
+  return {std::move(m->data), m->charged};
 }
 
 } // namespace zc

@@ -18,9 +18,10 @@ public:
   int rank() const override { return rank_; }
   int size() const override { return nodes_; }
   Topology topology() const override { return topology_; }
-  void send(int dst, int tag, Bytes data) override;
-  SendHandle isend(int dst, int tag, Bytes data) override;
-  Bytes recv(int src, int tag, int* from) override;
+  using Comm::isend;
+  using Comm::send;
+  SendHandle isend(int dst, int tag, Message m) override;
+  Message recv_message(int src, int tag, int* from) override;
   double now() const override { return simgrid::s4u::Engine::get_clock(); }
 
 private:

@@ -1,5 +1,6 @@
 #pragma once
-// A message on its way through the simulated machine: the payload, and when it is fully received.
+// A message on its way through the simulated machine: the payload, the size it is charged, and
+// when it is fully received.
 #include <cstddef>
 #include <limits>
 #include <memory>
@@ -15,6 +16,7 @@ constexpr double kNotYet = std::numeric_limits<double>::infinity();
 struct Transit {
   int src, dst, tag;
   Bytes data;
+  std::size_t charged = 0; // the bytes the network is charged (comm.hpp)
   double sent_at = 0;
   double arrival = kNotYet; // virtual time of full reception, kNotYet while contention decides it
   // Progress through the circuit fidelity's holds (Delivery's channel bookkeeping).

@@ -34,6 +34,19 @@ comm)
     grep -q '"status": "ok"' "$tmp/c$np.json" 2>/dev/null || bad "comm-check P=$np: no ok report"
     [ "$fail" = 0 ] && echo "ok   comm-check P=$np"
   done
+  # Messages charged as the paper's records (9-byte pixels, 72-byte polygons) against zcube's
+  # larger payloads: the charged size travels with each message and the report states both.
+  mpi 4 run --backend mpi --algorithm pair-rs --scene "$src/scenes/kurc/1pot.json" --size 160x160 \
+    --report "$tmp/charged.json" >"$tmp/out" 2>&1 || bad "pair-rs charged: $(tail -3 "$tmp/out")"
+  /usr/bin/python3 - "$tmp/charged.json" <<'PY' || bad "pair-rs charged: charged bytes not below the payload's"
+import json, sys
+r = json.load(open(sys.argv[1]))
+c = r["communication"]
+ph = {p["name"]: p for p in r["phases"]}
+assert 0 < c["bytes"] < c["payload_bytes"], c
+assert 0 < ph["pixel_merging"]["charged_bytes"] < ph["pixel_merging"]["payload_bytes"], ph
+PY
+  [ "$fail" = 0 ] && echo "ok   charged records P=4"
   ;;
 images)
   # Each algorithm family gives the sequential image (P = 2 and 4; Blazek's host is one more rank).

@@ -199,7 +199,7 @@ TEST(Memory, ExceedingNodeMemoryFailsAndSaysWhereAndByHowMuch) {
   SimConfig c = sim_config("ipsc2", 1, Topology::Cube, Fidelity::Circuit);
   c.algorithm = "sequential";
   c.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/teapot.json";
-  c.width = c.height = 1024; // 11 bytes a pixel: 11.5 MB > 4 MB
+  c.width = c.height = 1024; // 7 bytes a pixel (depth and colour): 7.3 MB > 4 MB
   auto r = run_simulation_isolated(c);
   EXPECT_EQ(r["status"], "out_of_memory");
   const std::string e = r["error"];

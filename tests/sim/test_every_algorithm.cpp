@@ -53,7 +53,7 @@ TEST(EveryAlgorithm, FourNodesRunAndMatchTheSequentialImage) {
 TEST(EveryAlgorithm, FailedRunsEndCleanly) {
   // The failure paths under the sanitizers too: a node out of memory kills every actor mid-run,
   // and a deadlock leaves actors blocked when the simulation ends.
-  // Peaks at this size: elastic 1.23 MB, zbuf-exc 1.92 MB, host-initiated 0.54 MB a node.
+  // Peaks at this size: elastic 1.03 MB, zbuf-exc 1.75 MB, host-initiated 0.534 MB a node.
   for (const auto& [name, memory] : {std::pair{"elastic", 1.0e6}, std::pair{"zbuf-exc", 1.5e6},
                                      std::pair{"host-initiated", 0.53e6}}) {
     SCOPED_TRACE(name);
