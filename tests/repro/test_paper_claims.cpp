@@ -147,11 +147,12 @@ TEST(PaperClaims, KurcAapcMergesWithLessOverheadThanPair) {
 
 // Kurc et al. §5: some Table 2 cases "could not be obtained due to insufficient local memory", and
 // the 8-node section has no 8 POT_2 row. Out of memory must come out of the model. Disabled with
-// the measured reason (docs/memory.md, "Kurc's asterisks"): every buffer the node holds at the
-// first halving stage is charged (NX/2 512 KiB, polygons, full z-buffer, receive buffer) and the
-// peak is 3,509,380 bytes at 8 nodes (3,336,880 at 16) of 4,194,304. Keeping the span lists adds
-// 0.49 MB (still fits); an NX/2 system buffer for the early partner's half beside the receive
-// buffer puts 8 AND 16 nodes out of memory, which the printed 16-node rows rule out.
+// the measured reason (docs/memory.md, "Kurc's asterisks"): with the paper's records the 8-node
+// peak is 2,474,360 bytes (16 nodes: 2,339,360) of 4,194,304; the sentence needs NX/2 and the
+// program (R) plus early-message buffers (B) in (2,244,232, 2,379,232] bytes, R in (1.61, 1.73]
+// MiB even with the partner's half system-buffered, beyond R's 256 KiB - 1 MiB. Only charging
+// three buffers the paper does not describe (that half, a packed send buffer, span lists kept)
+// brings R into its range.
 TEST(PaperClaims, DISABLED_KurcAnEightNodeConfigurationRunsOutOfLocalMemory) {
   const auto r8 = run("ipsc2", 8, "zbuf-exc", "scenes/kurc/8pot_2.json", 400);
   EXPECT_EQ(r8["status"], "out_of_memory") << r8.dump().substr(0, 400);
