@@ -111,11 +111,29 @@ void check_point_to_point(Comm& c, Checks& check) {
   }
 }
 
+// Charged sizes travel with the blocks they charge (comm/comm.hpp), whatever the backend.
+void check_charged(Comm& c, Checks& check) {
+  const int P = c.size(), r = c.rank();
+  auto g = coll::gatherv(c, 0, Message{block(r, 3 + r), std::size_t(1000 + r)});
+  if (r == 0) {
+    bool ok = int(g.size()) == P;
+    for (int k = 0; ok && k < P; ++k)
+      ok = g[std::size_t(k)].payload == block(k, 3 + k) && g[std::size_t(k)].charged == 1000u + k;
+    check(ok, "gatherv of charged blocks");
+  }
+  auto all = coll::alltoallv(c, std::vector<Message>(std::size_t(P), Message{block(r, 2), 77}));
+  bool ok = int(all.size()) == P;
+  for (int k = 0; ok && k < P; ++k)
+    ok = all[std::size_t(k)].payload == block(k, 2) && all[std::size_t(k)].charged == 77;
+  check(ok, "alltoallv of charged blocks");
+}
+
 void comm_check_node(NodeContext& ctx) {
   Comm& c = ctx.comm();
   Checks check;
   check_rooted(c, check);
   check_all(c, check);
+  check_charged(c, check);
   check_point_to_point(c, check);
   coll::barrier(c);
   ctx.metrics()["comm_check_failures"] = check.failures;
