@@ -166,26 +166,48 @@ TEST(PaperClaims, DISABLED_KurcAnEightNodeConfigurationRunsOutOfLocalMemory) {
 // Checked at 64 spheres (524,288 polygons) on 32 nodes, where every method has work on every node
 // (the thesis's 2048 spheres take minutes of host time a method). The thesis also puts broadcast
 // ahead of object forwarding; the model does not, for a reason measured and derived in
-// docs/papers.md ("Blazek's ranking"), so that pair is not asserted.
-TEST(PaperClaims, BlazekNodeInitiatedBestHostInitiatedWorst) {
+// docs/papers.md ("Blazek's ranking"), so that pair is not asserted. Run once for both checks.
+struct BlazekRuns {
   std::map<std::string, double> t;
-  for (const char* m :
-       {"node-initiated", "host-broadcast", "object-forwarding", "host-initiated"}) {
-    SimConfig c;
-    c.machine = "ipsc2";
-    c.nodes = 32;
-    c.algorithm = m;
-    c.scene_path = kRoot + "/scenes/blazek/thesis_spheres_64.json";
-    c.width = c.height = 512;
-    c.compare_with_sequential = false;
-    c.overrides.memory_bytes = 16.0 * 1048576; // ch. IV: "up to sixteen megabytes"
-    if (std::string(m) == "host-initiated") c.options.values["packet"] = "100";
-    const auto r = run_simulation_isolated(c);
-    ASSERT_EQ(r["status"], "ok") << m << ": " << r.value("error", "");
-    t[m] = timed_s(r);
+  static const BlazekRuns& get() {
+    static const BlazekRuns b = [] {
+      BlazekRuns x;
+      std::map<std::string, double>& t = x.t;
+      for (const char* m :
+           {"node-initiated", "host-broadcast", "object-forwarding", "host-initiated"}) {
+        SimConfig c;
+        c.machine = "ipsc2";
+        c.nodes = 32;
+        c.algorithm = m;
+        c.scene_path = kRoot + "/scenes/blazek/thesis_spheres_64.json";
+        c.width = c.height = 512;
+        c.compare_with_sequential = false;
+        c.overrides.memory_bytes = 16.0 * 1048576; // ch. IV: "up to sixteen megabytes"
+        if (std::string(m) == "host-initiated") c.options.values["packet"] = "100";
+        const auto r = run_simulation_isolated(c);
+        EXPECT_EQ(r["status"], "ok") << m << ": " << r.value("error", "");
+        t[m] = timed_s(r);
+      }
+      return x;
+    }();
+    return b;
   }
-  EXPECT_LT(t["node-initiated"], t["host-broadcast"]);
-  EXPECT_LT(t["node-initiated"], t["object-forwarding"]);
-  EXPECT_LT(t["host-broadcast"], t["host-initiated"]);
-  EXPECT_LT(t["object-forwarding"], t["host-initiated"]);
+};
+
+TEST(PaperClaims, BlazekNodeInitiatedBestHostInitiatedBelowForwarding) {
+  const auto& t = BlazekRuns::get().t;
+  EXPECT_LT(t.at("node-initiated"), t.at("host-broadcast"));
+  EXPECT_LT(t.at("node-initiated"), t.at("object-forwarding"));
+  EXPECT_LT(t.at("object-forwarding"), t.at("host-initiated"));
+}
+
+// Host initiated below host broadcast too. Not reproduced since the host's polygon packets are
+// charged the thesis's 30 bytes a polygon ("packets containing 100 polygons each ... three
+// kilobytes", ch. V) instead of zcube's 80: host initiated 166.7 -> 126.9 s, host broadcast
+// 128.9 s (both on the 1 ms, 1 MB/s host link assumption, docs/machines.md; the broadcast's floor
+// is every node tessellating every polygon, docs/papers.md "Blazek's ranking"). Disabled for that
+// measured reason.
+TEST(PaperClaims, DISABLED_BlazekHostBroadcastAheadOfHostInitiated) {
+  const auto& t = BlazekRuns::get().t;
+  EXPECT_LT(t.at("host-broadcast"), t.at("host-initiated"));
 }
