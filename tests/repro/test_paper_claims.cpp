@@ -90,10 +90,11 @@ TEST(PaperClaims, CharlesSkullRingBelowHypercube) {
 }
 
 // "When we use an hypercube of 16 processors we go [held out] times faster while the speed-up of
-// the teapot is limited to 8.3". Not reproduced (skull 5.79, Table 1's teapot 7.41): the stand-in
-// carries 117 us of work per vertex on the wire against the teapot's 317 us, and no plausible CPU
-// or network setting reverses the order (docs/papers.md, "Charles's skull against the teapot", the
-// measured what-ifs). Disabled for that documented reason; never tuned to the held-out figure.
+// the teapot is limited to 8.3". Not reproduced (skull 7.29, Table 1's teapot 8.19, with the
+// paper's records): the stand-in carries 117 us of work per vertex on the wire against the
+// teapot's 317 us, and no plausible CPU or network setting reverses the order (docs/papers.md,
+// "Charles's skull against the teapot", the measured what-ifs). Disabled for that documented
+// reason; never tuned to the held-out figure.
 TEST(PaperClaims, DISABLED_CharlesSkullSpeedupAboveTeapotOn16CubeNodes) {
   const auto& c = CharlesRuns::get();
   c.expect_ok();
