@@ -48,7 +48,9 @@ const std::vector<CostGroup>& cost_groups() {
        {"pixels_generated", "pixels_tested", "pixels_written", "pixels_final", "texels_fetched"}},
       {"clear", {"pixels_cleared"}},
       {"merge", {"merge_ops"}},
-      {"packing", {"bytes_packed"}}};
+      {"packing", {"bytes_packed"}},
+      {"list_merge", {"list_merges"}},
+      {"scanline", {"wpa_tested", "wpa_appended"}}};
   return g;
 }
 
@@ -78,7 +80,7 @@ std::vector<double> group_seconds(const CostTable& prices, const std::vector<Cos
 }
 
 std::vector<double> calibrated_group_scale() {
-  static_assert(std::size(calibrated::kGroupScale) == 6, "one multiplier per cost group");
+  static_assert(std::size(calibrated::kGroupScale) == 8, "one multiplier per cost group");
   return std::vector<double>(std::begin(calibrated::kGroupScale),
                              std::end(calibrated::kGroupScale));
 }

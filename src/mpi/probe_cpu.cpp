@@ -74,7 +74,9 @@ const std::vector<CostGroup>& probe_groups() {
        {"pixels_generated", "pixels_tested", "pixels_written", "pixels_final", "texels_fetched"}},
       {"clear", {"pixels_cleared"}},
       {"merge", {"merge_ops"}},
-      {"packing", {"bytes_packed"}}};
+      {"packing", {"bytes_packed"}},
+      {"list_merge", {"list_merges"}},               // timed by the active merge
+      {"scanline", {"wpa_tested", "wpa_appended"}}}; // timed by the active z-buffer
   return g;
 }
 

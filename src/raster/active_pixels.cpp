@@ -58,7 +58,7 @@ ActivePixels zbuffer_spans(const SpanLists& L, const TriangleBatch& batch, const
       for (int x = sp.x0; x <= seg_end; ++x) {
         WinningPixel& w = A.pixels[msa[x] - 1];
         const float z = rs.depth(x);
-        ++c.pixels_tested;
+        ++c.wpa_tested;
         if (in_front(z, t.id, w.z, w.id)) {
           w.z = z;
           w.id = t.id;
@@ -75,6 +75,7 @@ ActivePixels zbuffer_spans(const SpanLists& L, const TriangleBatch& batch, const
         rs.color(x, w.rgb, c);
         A.pixels.push_back(w);
         msa[x] = std::uint32_t(A.pixels.size()); // >= range by construction
+        ++c.wpa_appended;
         ++c.pixels_written;
       }
       maxx = std::max(maxx, sp.x1);
@@ -119,7 +120,7 @@ ActivePixels merge_active(const ActivePixels& a, const ActivePixels& b, Counters
               b.pixels.data() + b.row_begin[k], b.pixels.data() + b.row_begin[k + 1], r.pixels);
     r.row_begin[k + 1] = std::uint32_t(r.pixels.size());
   }
-  c.merge_ops += a.pixels.size() + b.pixels.size();
+  c.list_merges += a.pixels.size() + b.pixels.size();
   return r;
 }
 

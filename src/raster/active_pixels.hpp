@@ -58,13 +58,17 @@ struct ActivePixels {
 };
 
 // The modified scanline z-buffer over all rows of the span lists; `msa` scratch is width entries.
+// Counts c.wpa_tested for a first-segment fragment (its depth test through the MSA) and
+// c.wpa_appended for a second-segment one (appended without comparison); pixels_generated and
+// pixels_written as the frame-buffer loops count them.
 ActivePixels zbuffer_spans(const SpanLists& lists, const TriangleBatch& batch,
                            const ShadeContext& ctx, int width, Counters& c);
 
 // Merges two pixel sets over the same rows: per row a merge of two x-sorted lists, the nearer
 // pixel (depth, then lower id) winning at equal x. Every pixel of either set is visited once (a
-// comparison or a copy into the result): |retained| + |received| merge operations (c.merge_ops),
-// the unit of a full z-buffer merge, which visits every location of its region once.
+// comparison or a copy into the result): |retained| + |received| list merge steps
+// (c.list_merges), Kurc et al.'s merge operations (Fig. 2), priced apart from a z-buffer merge's
+// location compare (c.merge_ops): a different loop (docs/machines.md, "One cost per loop").
 ActivePixels merge_active(const ActivePixels& retained, const ActivePixels& received, Counters& c);
 
 // The rows of `a` for which keep(y) holds (the others emptied), over the same row range.

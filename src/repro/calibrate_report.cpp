@@ -1,8 +1,10 @@
 // The calibration's files: the generated header, the CSV tables and the README of
 // results/calibration/ (repro/calibrate.hpp).
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <sstream>
 
 #include "machine/cpu_model.hpp"
@@ -92,10 +94,11 @@ void write_csvs(const nlohmann::json& fit, const std::string& dir) {
   write_text_file(dir + "/charles_prediction.csv", c.str());
   if (fit.contains("selection")) {
     std::ostringstream sel;
-    sel << "fixed_groups,free_parameters,median_abs_rel_error,rms_rel_error\n";
+    sel << "fixed_groups,free_parameters,median_abs_rel_error,worst_abs_rel_error,rms_rel_error\n";
     for (const auto& r : fit["selection"])
       sel << "\"" << r["fixed_groups"].get<std::string>() << "\"," << r["free_parameters"] << ","
-          << num(r["median_abs_rel_error"]) << "," << num(r["rms_rel_error"]) << "\n";
+          << num(r["median_abs_rel_error"]) << "," << num(r.value("worst_abs_rel_error", 0.0))
+          << "," << num(r["rms_rel_error"]) << "\n";
     write_text_file(dir + "/selection.csv", sel.str());
   }
   if (!fit.contains("crossval")) return;
@@ -181,7 +184,9 @@ void readme_validation(std::ostream& md, const nlohmann::json& fit) {
     const auto& cv = fit["crossval"];
     md << "**Leave one scene out** (`crossval.csv`): fit five scenes, simulate the sixth at the "
           "fold's costs.\nMedian absolute error "
-       << plain_pct(cv["median_abs_rel_error"]) << ", RMS " << plain_pct(cv["rms_rel_error"])
+       << plain_pct(cv["median_abs_rel_error"]) << ", worst figure "
+       << plain_pct(cv.value("worst_abs_rel_error", 0.0)) << ", RMS "
+       << plain_pct(cv["rms_rel_error"])
        << ".\n\n| held-out scene | multipliers | its six figures: predicted / paper ms (error) "
           "|\n|---|---|---|\n";
     for (const auto& f : cv["folds"]) {
@@ -221,13 +226,49 @@ void readme_validation(std::ostream& md, const nlohmann::json& fit) {
 void readme_selection(std::ostream& md, const nlohmann::json& fit) {
   if (!fit.contains("selection")) return;
   md << "## How many free parameters (`selection.csv`)\n\n| groups kept physical | free "
-        "parameters | leave-one-scene-out median error | RMS |\n|---|---|---|---|\n";
+        "parameters | leave-one-scene-out median error | worst figure | RMS |\n"
+        "|---|---|---|---|---|\n";
   for (const auto& r : fit["selection"])
     md << "| "
        << (r["fixed_groups"].get<std::string>().empty() ? "(none)"
                                                         : r["fixed_groups"].get<std::string>())
        << " | " << r["free_parameters"] << " | " << plain_pct(r["median_abs_rel_error"]) << " | "
-       << plain_pct(r["rms_rel_error"]) << " |\n";
+       << plain_pct(r.value("worst_abs_rel_error", 0.0)) << " | " << plain_pct(r["rms_rel_error"])
+       << " |\n";
+  md << "\n";
+}
+
+// Per scheme and phase, the fitted residuals of the six scenes: a residual of one sign in every
+// scene is a structural error (a loop priced wrong or not counted), not scatter.
+void readme_signs(std::ostream& md, const nlohmann::json& fit) {
+  std::map<std::string, std::vector<double>> by_phase; // "scheme/phase" -> residuals
+  std::vector<std::string> order;
+  for (const auto& t : fit["targets"]) {
+    const std::string id = t["id"]; // kurc/p16/<scene>/<scheme>/<phase>
+    const std::size_t a = id.find('/', id.find('/', 5) + 1);
+    const std::string key = id.substr(a + 1);
+    if (!by_phase.count(key)) order.push_back(key);
+    by_phase[key].push_back(t["rel_error_fitted"].get<double>());
+  }
+  md << "## Residuals of one sign (structural errors)\n\n| scheme / phase | fitted residuals by "
+        "scene | one sign | smallest |residual| |\n|---|---|---|---|\n";
+  for (const auto& key : order) {
+    const auto& e = by_phase[key];
+    std::string cells;
+    bool pos = true, neg = true;
+    double smallest = 1e300;
+    for (double x : e) {
+      cells += (cells.empty() ? "" : ", ") + pct(x);
+      pos = pos && x > 0;
+      neg = neg && x < 0;
+      smallest = std::min(smallest, std::fabs(x));
+    }
+    const bool one = pos || neg;
+    md << "| " << key << " | " << cells << " | " << (one ? (pos ? "all +" : "all -") : "no")
+       << " | "
+       << (one && smallest > 0.10 ? "**" + plain_pct(smallest) + "**" : plain_pct(smallest))
+       << " |\n";
+  }
   md << "\n";
 }
 
@@ -252,6 +293,7 @@ void write_calibration_results(const nlohmann::json& fit, const std::string& dir
   readme_fit(md, fit);
   readme_validation(md, fit);
   readme_selection(md, fit);
+  readme_signs(md, fit);
   readme_targets(md, fit);
   write_text_file(dir + "/README.md", md.str());
 }

@@ -17,16 +17,21 @@ struct Counters {
   std::uint64_t triangles_setup = 0;       // screen triangles set up (after clipping)
   std::uint64_t spans = 0;                 // non-empty (row, triangle) spans rasterised
   std::uint64_t pixels_generated = 0;      // fragments produced (TPG of Kurc et al.)
-  std::uint64_t pixels_tested = 0;         // depth comparisons against a stored pixel
+  std::uint64_t pixels_tested = 0;         // depth comparisons against a frame-buffer location
   std::uint64_t pixels_written = 0;        // fragments that won their depth test
   std::uint64_t pixels_final = 0;          // covered pixels of the final image (TPF)
   std::uint64_t texels_fetched = 0;        // texture samples (0 for an untextured scene)
   std::uint64_t pixels_cleared = 0;        // frame/z-buffer locations initialised
-  std::uint64_t merge_ops = 0;             // pixel comparisons while merging partial images
+  std::uint64_t merge_ops = 0;             // z-buffer locations compared while merging z-buffers
   std::uint64_t bytes_packed = 0;          // bytes copied into or out of message buffers
   std::uint64_t triangles_estimated = 0;   // per-triangle load estimates (Charles et al. §5)
   std::uint64_t rows_scanned = 0;          // per-row passes: prefix scans, partitions, row counts
   std::uint64_t triangles_tessellated = 0; // polygons made from primitive descriptions (Blazek)
+  // One loop each of Kurc et al.'s active pixels (raster/active_pixels.hpp), priced apart from the
+  // frame-buffer loops above (docs/machines.md, "One cost per loop"):
+  std::uint64_t list_merges = 0; // pixels of two x-sorted pixel lists merged into a new list (§3.1)
+  std::uint64_t wpa_tested = 0;  // depth comparisons through the MSA against a WPA entry (§2)
+  std::uint64_t wpa_appended = 0; // fragments appended to the WPA without comparison (§2)
 
   Counters& operator+=(const Counters& o);
   friend Counters operator+(Counters a, const Counters& b) { return a += b; }
@@ -56,6 +61,9 @@ void from_json(const nlohmann::json& j, Counters& c); // absent fields are 0
   X(bytes_packed)                                                                                  \
   X(triangles_estimated)                                                                           \
   X(rows_scanned)                                                                                  \
-  X(triangles_tessellated)
+  X(triangles_tessellated)                                                                         \
+  X(list_merges)                                                                                   \
+  X(wpa_tested)                                                                                    \
+  X(wpa_appended)
 
 } // namespace zc

@@ -1,7 +1,10 @@
 // Kurc, Aykanat, Ozguc on the simulated iPSC/2: images, volumes and balance as the paper states.
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include "sim_fixtures.hpp"
+#include "util/counters.hpp"
 
 using namespace zc;
 using namespace zc::test;
@@ -88,4 +91,39 @@ TEST(Kurc, FullZBufferOfA640ScreenDoesNotFitAFourMegabyteNode) {
   EXPECT_NE(r["error"].get<std::string>().find("receive buffer"), std::string::npos) << r["error"];
   c.algorithm = "aapc-hbp";
   EXPECT_EQ(run_simulation_isolated(c)["status"], "ok");
+}
+
+// One cost per loop (docs/machines.md): each scheme's merge and local z-buffer are counted as the
+// loop it runs. ZBUF-EXC compares z-buffer locations (merge_ops) after a frame-buffer z-buffer
+// (pixels_tested); PAIR merges x-sorted lists (list_merges) after the MSA/WPA (wpa_*); AAPC
+// z-buffers into its owned scanlines (merge_ops, §3.2) after the MSA/WPA.
+TEST(Kurc, EachSchemeCountsTheLoopsItRuns) {
+  auto work = [](const nlohmann::json& r, const char* phase) {
+    Counters sum;
+    for (const auto& n : r["per_node"])
+      sum += n["phase_work"].value(phase, nlohmann::json::object()).get<Counters>();
+    return sum;
+  };
+  std::map<std::string, nlohmann::json> r;
+  for (const char* s : {"zbuf-exc", "pair-rs", "aapc-rs"}) {
+    r[s] = kurc(s, kurc_scene("2pot"), 4, 96, false);
+    ASSERT_EQ(r[s]["status"], "ok") << r[s].dump();
+  }
+  const Counters zl = work(r["zbuf-exc"], "local_zbuffer"),
+                 zm = work(r["zbuf-exc"], "pixel_merging");
+  EXPECT_EQ(zl.pixels_tested, zl.pixels_generated);
+  EXPECT_EQ(zl.wpa_tested + zl.wpa_appended, 0u);
+  EXPECT_EQ(zm.merge_ops, 4u * 96 * (48 + 24)); // every location of the halves, 2 stages, 4 nodes
+  EXPECT_EQ(zm.list_merges, 0u);
+  for (const char* s : {"pair-rs", "aapc-rs"}) {
+    const Counters l = work(r[s], "local_zbuffer");
+    EXPECT_EQ(l.pixels_tested, 0u) << s;
+    EXPECT_EQ(l.wpa_tested + l.wpa_appended, l.pixels_generated) << s;
+    EXPECT_GT(l.wpa_appended, l.wpa_tested) << s;
+  }
+  const Counters pm = work(r["pair-rs"], "pixel_merging"), am = work(r["aapc-rs"], "pixel_merging");
+  EXPECT_GT(pm.list_merges, 0u);
+  EXPECT_EQ(pm.merge_ops, 0u);
+  EXPECT_GT(am.merge_ops, 0u);
+  EXPECT_EQ(am.list_merges, 0u);
 }

@@ -1,10 +1,11 @@
 // The committed calibration (results/calibration/, written by `zcube calibrate --write`) keeps the
 // promises of docs/machines.md: every fitted cost within its plausible range of the physical
 // estimate, the multipliers in the header equal to the committed fit, the validation tables there
-// and the cross-validation's median error within the 10 % the model is held to.
+// and the cross-validation's median error within the 7 % the model is held to.
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -48,7 +49,7 @@ TEST(CommittedCalibration, TheHeaderHoldsTheCommittedMultipliers) {
     EXPECT_NEAR(fit["scale"][g].get<double>(), k[g], 1e-12 * k[g]) << g;
 }
 
-TEST(CommittedCalibration, CrossValidationCoversEverySceneAndPredictsWithin10Percent) {
+TEST(CommittedCalibration, CrossValidationCoversEverySceneAndPredictsWithin7Percent) {
   const auto fit = committed_fit();
   ASSERT_TRUE(fit.is_object());
   ASSERT_TRUE(fit.contains("crossval"));
@@ -65,7 +66,7 @@ TEST(CommittedCalibration, CrossValidationCoversEverySceneAndPredictsWithin10Per
   std::sort(errs.begin(), errs.end());
   const double median = 0.5 * (errs[errs.size() / 2 - 1] + errs[errs.size() / 2]);
   EXPECT_NEAR(median, fit["crossval"]["median_abs_rel_error"].get<double>(), 1e-12);
-  EXPECT_LE(median, 0.10);
+  EXPECT_LE(median, 0.07);
 }
 
 TEST(CommittedCalibration, CharlesSpeedupsArePredictionsBesideThePapersFigures) {
@@ -80,4 +81,39 @@ TEST(CommittedCalibration, CharlesSpeedupsArePredictionsBesideThePapersFigures) 
   // No Charles figure is a fitted target.
   for (const auto& t : fit["targets"])
     EXPECT_EQ(t["id"].get<std::string>().rfind("kurc/", 0), 0u) << t["id"];
+}
+
+// A residual of one sign in all six scenes is a structural error (a loop priced wrong or not
+// counted): none of Table 2's phases may keep one above 10 % after the fit.
+TEST(CommittedCalibration, NoPhaseIsOffByMoreThan10PercentInTheSameDirectionInEveryScene) {
+  const auto fit = committed_fit();
+  ASSERT_TRUE(fit.is_object());
+  std::map<std::string, std::vector<double>> by_phase; // scheme/phase -> fitted residuals
+  for (const auto& t : fit["targets"]) {
+    const std::string id = t["id"]; // kurc/p16/<scene>/<scheme>/<phase>
+    const std::size_t scene_end = id.find('/', id.find('/', 5) + 1);
+    by_phase[id.substr(scene_end + 1)].push_back(t["rel_error_fitted"].get<double>());
+  }
+  ASSERT_EQ(by_phase.size(), 6u);
+  for (const auto& [phase, e] : by_phase) {
+    ASSERT_EQ(e.size(), kurc_scenes().size()) << phase;
+    const bool one_sign = std::all_of(e.begin(), e.end(), [](double x) { return x > 0; }) ||
+                          std::all_of(e.begin(), e.end(), [](double x) { return x < 0; });
+    double smallest = 1e300;
+    for (double x : e)
+      smallest = std::min(smallest, std::fabs(x));
+    EXPECT_FALSE(one_sign && smallest > 0.10)
+        << phase << ": every scene off by more than " << smallest << " the same way";
+  }
+}
+
+TEST(CommittedCalibration, NoHeldOutSceneFigureIsPredictedWorseThan20Percent) {
+  const auto fit = committed_fit();
+  ASSERT_TRUE(fit.is_object());
+  double worst = 0;
+  for (const auto& f : fit["crossval"]["folds"])
+    for (const auto& t : f["targets"])
+      worst = std::max(worst, std::fabs(t["rel_error"].get<double>()));
+  EXPECT_NEAR(worst, fit["crossval"]["worst_abs_rel_error"].get<double>(), 1e-12);
+  EXPECT_LE(worst, 0.20);
 }
