@@ -6,12 +6,14 @@ namespace zc::calibrated {
 inline constexpr bool kFitted = true;
 // The groups kept at their physical estimate (the fewest free parameters the cross-validation
 // supports: results/calibration/selection.csv).
-inline constexpr const char* kFixedGroups = "packing,spans";
+inline constexpr const char* kFixedGroups = "packing,spans,scanline,clear";
 inline constexpr double kGroupScale[] = {
-    1.2384375272884993 /* geometry */,
+    1.238437527288499 /* geometry */,
     1 /* spans */,
-    2 /* pixels */,
-    0.7340793446976525 /* clear */,
-    1.6691680130194366 /* merge */,
-    1 /* packing */};
+    1.9755836341942243 /* pixels */,
+    1 /* clear */,
+    1.3482810497836428 /* merge */,
+    1 /* packing */,
+    2 /* list_merge */,
+    1 /* scanline */};
 } // namespace zc::calibrated
