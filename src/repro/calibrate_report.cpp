@@ -159,6 +159,8 @@ void readme_fit(std::ostream& md, const nlohmann::json& fit) {
        << fmt(fit["scale"][g].get<double>()) << " | "
        << (fit["at_bound"][g].get<bool>() ? "**yes**" : "no") << " |\n";
   }
+  md << "\nA group on a bound is where the data would have pushed further; `docs/machines.md` "
+        "(\"One cost per\nloop\") gives the measured reason for each.\n";
   md << "\n| operation | 80386 physical (cycles) | 80386 fitted (us) | i860 physical (cycles) | "
         "i860 fitted (us) |\n|---|---|---|---|---|\n";
   const auto& p = fit["plausibility"];
