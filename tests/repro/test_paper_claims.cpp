@@ -90,11 +90,11 @@ TEST(PaperClaims, CharlesSkullRingBelowHypercube) {
 }
 
 // "When we use an hypercube of 16 processors we go [held out] times faster while the speed-up of
-// the teapot is limited to 8.3". Not reproduced (skull 7.29, Table 1's teapot 8.19, with the
-// paper's records): the stand-in carries 117 us of work per vertex on the wire against the
-// teapot's 317 us, and no plausible CPU or network setting reverses the order (docs/papers.md,
-// "Charles's skull against the teapot", the measured what-ifs). Disabled for that documented
-// reason; never tuned to the held-out figure.
+// the teapot is limited to 8.3". Not reproduced (skull 7.28, Table 1's teapot 7.92, with the
+// paper's records and the loops priced apart): the stand-in carries 117 us of work per vertex on
+// the wire against the teapot's 317 us, and no plausible CPU or network setting reverses the order
+// (docs/papers.md, "Charles's skull against the teapot", the measured what-ifs). Disabled for that
+// documented reason; never tuned to the held-out figure.
 TEST(PaperClaims, DISABLED_CharlesSkullSpeedupAboveTeapotOn16CubeNodes) {
   const auto& c = CharlesRuns::get();
   c.expect_ok();
@@ -204,7 +204,7 @@ TEST(PaperClaims, BlazekNodeInitiatedBestHostInitiatedBelowForwarding) {
 
 // Host initiated below host broadcast too. Not reproduced since the host's polygon packets are
 // charged the thesis's 30 bytes a polygon ("packets containing 100 polygons each ... three
-// kilobytes", ch. V) instead of zcube's 80: host initiated 166.7 -> 126.9 s, host broadcast
+// kilobytes", ch. V) instead of zcube's 80: host initiated 166.7 -> 126.0 s, host broadcast
 // 128.9 s (both on the 1 ms, 1 MB/s host link assumption, docs/machines.md; the broadcast's floor
 // is every node tessellating every polygon, docs/papers.md "Blazek's ranking"). Disabled for that
 // measured reason.
