@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Simulator scaling (issue 14): host wall time, peak RSS and simulated messages per second of
+"""Simulator scaling: host wall time, peak RSS and simulated messages per second of
 `zcube run` against the node count P = 1..1024 for elastic, aapc-hbp and node-initiated, one
 simulation at a time, and the issue's goals as ratios measured in the same session. Writes
 results/scaling/sim_scaling.csv, goals.csv and sim_scaling.png (log-log, with an O(events)

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""What tracing costs (issue 13; a benchmark, never a test): host wall time of one zcube run
+"""What tracing costs (a benchmark, never a test): host wall time of one zcube run
 untraced, with --trace FILE.json (Chrome/Perfetto) and with --trace FILE.trace (Paje), and, when
 a second binary is given (zcube built from the commit before the event log), its untraced time:
 an untraced run must stay within 2 % of it, a traced 32-node run within 2x of the untraced one.

@@ -1,6 +1,6 @@
 // The only code that links OpenImageIO. It is built as a module that util/image_module loads on
 // the first image read or written, so that a run touching no image does not pay for resolving the
-// symbols of OpenImageIO's ~280 shared libraries at start-up (issue 14).
+// symbols of OpenImageIO's ~280 shared libraries at start-up.
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>

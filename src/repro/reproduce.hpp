@@ -43,7 +43,7 @@ struct ReproPoint {
 };
 using Reports = std::map<std::string, nlohmann::json>; // by point key
 
-// A space-time diagram of one point (issue 13): the point runs with a timeline, and reproduce
+// A space-time diagram of one point: the point runs with a timeline, and reproduce
 // draws it into the plan's directory with scripts/plot_gantt.py.
 struct GanttChart {
   std::string key, file, caption;

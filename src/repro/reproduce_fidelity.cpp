@@ -29,7 +29,7 @@ const std::vector<FidelityRun> kRuns = {
      "scenes/blazek/thesis_spheres_16.json", "", "", 16, 512, 16},
     {"object-forwarding-4-spheres-ipsc2-16", "ipsc2", "cube", "object-forwarding",
      "scenes/blazek/thesis_spheres_4.json", "forward", "object", 16, 512, 16},
-    // Beyond the papers' machines (issue 14): all-to-all heavy merging and the elastic z-buffer on
+    // Beyond the papers' machines: all-to-all heavy merging and the elastic z-buffer on
     // 128 nodes, pairwise merging on 1024, where contention and the simulators' costs differ.
     {"aapc-hbp-1pot-ipsc2-128", "ipsc2", "cube", "aapc-hbp", "scenes/kurc/1pot.json", "", "", 128,
      400, 0},

@@ -1,6 +1,6 @@
 #pragma once
 // Image files through the OpenImageIO module (src/image), loaded with dlopen on first use: a run
-// that reads and writes no image never loads OpenImageIO (issue 14: start-up time).
+// that reads and writes no image never loads OpenImageIO (start-up time).
 #include <cstdint>
 #include <string>
 #include <vector>

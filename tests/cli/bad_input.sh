@@ -43,7 +43,7 @@ check reproduce-unknown-paper "paper" "$zcube" reproduce frobnicate
 # zcube platform -o names the reason it cannot write (checked before any work).
 check platform-output-no-dir "directory '/nonexistent' does not exist" "$zcube" platform -o /nonexistent/x.xml
 check platform-output-is-dir "--output" "$zcube" platform -o "$tmp"
-# Bad platform files (issue 17): one line naming the file and the attribute, exit 2, before the
+# Bad platform files: one line naming the file and the attribute, exit 2, before the
 # simulation; the generated platform of a built-in machine never leaves a temporary file.
 for f in "$data"/bad_platform/*.xml; do
   name=$(basename "$f")

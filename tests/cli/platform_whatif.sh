@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `zcube platform` what-ifs (issue 15) and platforms on the fly for any P (issue 14 item 2):
+# `zcube platform` what-ifs and platforms on the fly for any P:
 # a platform written with --latency/--bandwidth/--cpu-scale (or --host-latency/--host-bandwidth)
 # runs as the same flags do on the built-in machine, and 1024-node cubes and 1000-node rings are
 # generated and routed.

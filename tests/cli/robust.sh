@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Reproducers of the hostile review (issue 17): extreme settings and odd combinations either run
+# Reproducers of the hostile review: extreme settings and odd combinations either run
 # correctly (exit 0), fail the run with one line (exit 1), or are refused up front as usage errors
 # (exit 2, one line, before any simulation). Never a crash, a hang or a wrong answer with exit 0.
 set -u

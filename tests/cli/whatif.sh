@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# What-if studies a user can trust (issue 15) and the sweep/regress/reproduce items of issue 17:
+# What-if studies a user can trust, sweeps, regress and reproduce:
 # units required on flags, overrides printed, SimGrid pass-through, --version, honest regress,
 # sweep speed-ups and clean --plot-y errors, sweeps that leave no stale files nor running children,
 # reproduce and calibrate that check --out first and never degrade committed results.
@@ -108,7 +108,7 @@ expect regress-no-json-blobs $? "$(cat "$tmp/out")"
 "$zcube" regress --against "$tmp/A" --with "$tmp/A" --rtol 0 >"$tmp/out" 2>&1
 expect regress-identical $? "$(cat "$tmp/out")"
 
-# --- finding 5 and issue 17: sweeps ---------------------------------------------------------------
+# --- finding 5: sweeps ---------------------------------------------------------------
 usage_error sweep-jobs-zero "--jobs" "$zcube" sweep --nodes 1,2 --jobs 0 --out "$tmp/sw1"
 usage_error sweep-plot-y-unknown "--plot-y" "$zcube" sweep "${small[@]}" --nodes 1,2 \
   --plot-y bogus --out "$tmp/sw1"
@@ -191,7 +191,7 @@ interrupt() { # NAME SIGNAL
 interrupt sweep-ctrl-c INT
 interrupt sweep-sigterm TERM
 
-# --- finding 3 and issue 17: reproduce and calibrate ----------------------------------------------
+# --- finding 3: reproduce and calibrate ----------------------------------------------
 start=$(date +%s)
 usage_error reproduce-out-file "--out" "$zcube" reproduce kurc --out "$tmp/afile"
 expect reproduce-out-checked-first $(( $(date +%s) - start > 5 ))

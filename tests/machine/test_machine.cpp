@@ -65,7 +65,7 @@ TEST(Units, SimGridStyle) {
   EXPECT_THROW(parse_time("fast"), UsageError);
   EXPECT_THROW(parse_time("10parsecs"), UsageError);
   EXPECT_THROW(parse_bandwidth("-1MBps"), UsageError);
-  // Flags require the unit: `--latency 275` is not 275 seconds (issue 15).
+  // Flags require the unit: `--latency 275` is not 275 seconds.
   EXPECT_THROW(parse_time("275", "--latency", Unit::Required), UsageError);
   EXPECT_THROW(parse_bandwidth("2.8", "--bandwidth", Unit::Required), UsageError);
   EXPECT_THROW(parse_bytes("16", "--memory", Unit::Required), UsageError);

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The MPI backend (issue 8), under mpirun on this machine (oversubscribed: P may exceed the cores).
+# The MPI backend, under mpirun on this machine (oversubscribed: P may exceed the cores).
 # usage: mpi_tests.sh ZCUBE MPIRUN SOURCE_DIR comm|images|sweep|probe|validate
 set -u
 zcube=$1 mpirun=$2 src=$3 what=$4

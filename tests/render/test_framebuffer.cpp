@@ -1,4 +1,4 @@
-// Framebuffer edge cases found by the hostile review (issue 17).
+// Framebuffer edge cases found by the hostile review.
 #include <gtest/gtest.h>
 
 #include "raster/framebuffer.hpp"

@@ -1,4 +1,4 @@
-// The coordinate range the renderer handles exactly (scenes/README.md 'Numeric range', issue 17):
+// The coordinate range the renderer handles exactly (scenes/README.md 'Numeric range'):
 // inside it a scene and its camera scaled by a power of two render the same bits, colour and
 // depth; just outside it the scene is refused on loading, naming the file and the field.
 #include <gtest/gtest.h>

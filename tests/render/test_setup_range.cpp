@@ -1,4 +1,4 @@
-// The fixed-point set-up at the edges of the float range (issue 17): vertices whose clip-space
+// The fixed-point set-up at the edges of the float range: vertices whose clip-space
 // values overflow are dropped, never turned into undefined 64-bit arithmetic (UBSan found a signed
 // overflow in the edge products for z = -3.4e38), and the rest of the picture is unaffected.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // The papers' qualitative statements, checked on the calibrated machine models at small sizes
-// where each statement holds (issue 12, item 7(d)). These are claims about the model, not about
+// where each statement holds. These are claims about the model, not about
 // the fit: a check that fails after a re-calibration says the refit broke a published statement.
 #include <gtest/gtest.h>
 

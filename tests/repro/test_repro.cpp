@@ -326,7 +326,7 @@ TEST(Regress, ReportsEveryChangedQuantityAndMissingRuns) {
   EXPECT_TRUE(what.count("z:(run)"));
 }
 
-// A tolerance for rounding noise (issue 15: 4.2e-16 was a "difference"); a run whose status
+// A tolerance for rounding noise (4.2e-16 was once reported as a "difference"); a run whose status
 // changed is one row, and a side that lacks a sub-report gives one row per value, never a blob.
 TEST(Regress, RelativeToleranceAndOneRowPerValue) {
   std::map<std::string, nlohmann::json> a = {

@@ -1,4 +1,4 @@
-// zcube reproduce's space-time diagrams (issue 13): each paper draws its representative runs, and
+// zcube reproduce's space-time diagrams: each paper draws its representative runs, and
 // every chart names a point its plan simulates.
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 // Communication layer, second part: message ordering, any-source and the host as a rank, the
 // remaining collectives' closed forms under the analytic fidelity, rings of every size, what-if
 // overrides, user-edited platform files, and the simulator's own speed (wall time per simulated
-// message and per collective on 32 nodes, printed for the closing note of issue 3).
+// message and per collective on 32 nodes, printed by this test).
 #include <bit>
 #include <cmath>
 #include <cstdio>

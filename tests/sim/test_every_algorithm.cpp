@@ -1,7 +1,7 @@
 // Every registered algorithm on 4 nodes, small scene and image: a correct run whose image equals
 // the sequential renderer's (comm-check: every collective and message order checked, no failure).
 // The same file is built into test_sim_asan (CMakeLists.txt) with the simulator under
-// AddressSanitizer + UndefinedBehaviorSanitizer (issue 17). There SimGrid runs its actors on
+// AddressSanitizer + UndefinedBehaviorSanitizer. There SimGrid runs its actors on
 // threads (contexts/factory:thread): its default context switching moves between stacks that ASan
 // does not know about (with ASan's stack-use-after-return check on, raw, boost and ucontext
 // contexts all give false stack-buffer-overflows; threads none).

@@ -1,4 +1,4 @@
-// Runs that must fail rather than report success (issue 17).
+// Runs that must fail rather than report success.
 #include <gtest/gtest.h>
 
 #include "sim_fixtures.hpp"

@@ -1,4 +1,4 @@
-// Many nodes (issue 14): every algorithm still gives the sequential renderer's picture on 64 and
+// Many nodes: every algorithm still gives the sequential renderer's picture on 64 and
 // 128 nodes, and the communication self-test passes on 1024.
 #include <gtest/gtest.h>
 

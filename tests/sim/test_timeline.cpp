@@ -1,4 +1,4 @@
-// The report's timeline (issue 13): phases with begin and end, activities that add up to the
+// The report's timeline: phases with begin and end, activities that add up to the
 // report's busy and communication times, every message with its send, arrival and receive times.
 #include <gtest/gtest.h>
 

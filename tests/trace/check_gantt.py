@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks a Gantt PNG of `zcube run --gantt` (issue 13): not blank, and one drawn row per node.
+"""Checks a Gantt PNG of `zcube run --gantt`: not blank, and one drawn row per node.
 
 usage: check_gantt.py CHART.png NODES
 The chart carries its row layout in the PNG text chunk "zcube-gantt" (scripts/plot_gantt.py):

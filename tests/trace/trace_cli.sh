@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# zcube run --trace / --gantt from the command line (issue 13): the charts for 1, 2, 16 and 32
+# zcube run --trace / --gantt from the command line: the charts for 1, 2, 16 and 32
 # nodes pass the image check; a trace of each format is written and read back; bad file names
 # are usage errors (exit 2) before any simulation; the MPI backend traces measured times.
 # usage: trace_cli.sh ZCUBE SOURCE_DIR [MPIRUN]
