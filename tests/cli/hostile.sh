@@ -216,8 +216,13 @@ fi
 "$zcube" sweep --nodes 1,2,4,8 --size 512x512 --algorithm elastic --frames 50 --jobs 2 --no-plot \
   --out "$tmp/hup" >/dev/null 2>&1 &
 parent=$!
-sleep 2
-kids=$(pgrep -P "$parent" | tr '\n' ' ')
+# Wait for the simulations to be forked (scenes are loaded first: seconds on a loaded machine).
+kids=""
+for _ in $(seq 300); do
+  kids=$(pgrep -P "$parent" | tr '\n' ' ')
+  [ -n "$kids" ] && break
+  sleep 0.1
+done
 kill -HUP "$parent"
 wait "$parent" 2>/dev/null
 sleep 1
