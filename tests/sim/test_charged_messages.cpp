@@ -12,11 +12,6 @@ using namespace zc::test;
 
 namespace {
 
-double vtime(const nlohmann::json& r) {
-  EXPECT_EQ(r["status"], "ok") << r.dump();
-  return r["virtual_time_s"].get<double>();
-}
-
 // Node 0 sends node `to` a payload of `payload` bytes charged as `charged`.
 nlohmann::json one_message(Fidelity f, int to, std::size_t payload, std::size_t charged) {
   return run_custom(sim_config("ipsc860", 8, Topology::Cube, f), [=](NodeContext& ctx) {

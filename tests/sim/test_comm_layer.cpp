@@ -31,11 +31,6 @@ using namespace zc::test;
 
 namespace {
 
-double vtime(const nlohmann::json& r) {
-  EXPECT_EQ(r["status"], "ok") << r.dump();
-  return r["virtual_time_s"].get<double>();
-}
-
 // One-way times of a ping-pong from node 0, indexed by (bytes, hops).
 std::map<std::pair<double, int>, double> one_way(const SimConfig& base, const std::string& to,
                                                  const std::string& sizes) {

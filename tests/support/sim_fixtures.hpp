@@ -39,4 +39,10 @@ inline nlohmann::json run_custom(SimConfig cfg, std::function<void(NodeContext&)
   return run_simulation_isolated(cfg);
 }
 
+// A run's virtual time, after checking that the run succeeded.
+inline double vtime(const nlohmann::json& r) {
+  EXPECT_EQ(r["status"], "ok") << r.dump();
+  return r["virtual_time_s"].get<double>();
+}
+
 } // namespace zc::test
