@@ -5,7 +5,12 @@
 #include <cstring>
 
 #include "algo/blazek_common.hpp"
+#include "algo/blazek_culling.hpp"
+#include "algo/blazek_merge_paste.hpp"
+#include "algo/blazek_mesh.hpp"
 #include "algo/blazek_methods.hpp"
+#include "algo/blazek_render.hpp"
+#include "algo/blazek_wire.hpp"
 #include "comm/collectives.hpp"
 #include "comm/wire.hpp"
 #include "util/error.hpp"

@@ -5,7 +5,9 @@
 #include <string>
 
 #include "algo/blazek_common.hpp"
+#include "algo/blazek_host_messages.hpp"
 #include "algo/blazek_methods.hpp"
+#include "algo/blazek_wire.hpp"
 #include "comm/wire.hpp"
 #include "util/error.hpp"
 

@@ -1,7 +1,9 @@
 // Blazek 1991, ch. V "Node Initiated Method": the host sends only primitive descriptions (about
 // 100 bytes each) round-robin; the nodes tessellate and render them, then merge hierarchically.
 #include "algo/blazek_common.hpp"
+#include "algo/blazek_host_messages.hpp"
 #include "algo/blazek_methods.hpp"
+#include "algo/blazek_wire.hpp"
 
 namespace zc::blazek {
 

@@ -4,7 +4,12 @@
 // be re-tessellated (--forward object) or the tessellated polygons (--forward polygons). Strips
 // are pasted, not merged.
 #include "algo/blazek_common.hpp"
+#include "algo/blazek_culling.hpp"
+#include "algo/blazek_merge_paste.hpp"
+#include "algo/blazek_mesh.hpp"
 #include "algo/blazek_methods.hpp"
+#include "algo/blazek_render.hpp"
+#include "algo/blazek_wire.hpp"
 #include "comm/collectives.hpp"
 #include "comm/wire.hpp"
 #include "util/error.hpp"
