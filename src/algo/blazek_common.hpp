@@ -1,10 +1,10 @@
 #pragma once
 // Blazek 1991, ch. IV "Software" and ch. V: what the host (SRM) program and the node programs of
-// the four decompositions agree on: message tags, the host's end marker, the host initiated flow
-// control, the scenes the methods accept, and node memory held for a scope. The methods' pieces,
-// one job a file: blazek_wire (what travels), blazek_mesh (tessellation), blazek_culling (strips
-// and what touches them), blazek_render (z-buffer rendering), blazek_host_messages (the node loop
-// of host and node initiated), blazek_merge_paste (hierarchical merge, pasting).
+// the four decompositions agree on: message tags, the host's end marker, the scenes the methods
+// accept, and node memory held for a scope. The methods' pieces, one job a file: blazek_wire
+// (what travels), blazek_mesh (tessellation), blazek_culling (strips and what touches them),
+// blazek_render (z-buffer rendering), blazek_host_messages (the node's loop over the host's
+// messages), blazek_merge_paste (hierarchical merge, pasting).
 #include "algo/algorithm.hpp"
 #include "scene/scene.hpp"
 #include "util/error.hpp"
@@ -12,12 +12,6 @@
 namespace zc::blazek {
 
 constexpr int kTagHost = 1, kTagForward = 2, kTagMerge = 3, kTagAck = 4;
-
-// Host initiated flow control: a node buffers at most this many unconsumed polygon packets (its
-// message buffers are part of its few megabytes); it acknowledges each packet it has rendered,
-// and the host waits for the acknowledgement of packet i - kHostWindow before sending packet i to
-// the same node. (An assumption: the thesis does not say how its host was throttled.)
-constexpr int kHostWindow = 4;
 
 // Checks the scene suits the methods (untextured; Blazek's renderer had no textures).
 inline void check_scene(const Scene& s) {

@@ -1,19 +1,22 @@
 #pragma once
-// Blazek 1991, ch. V "Host Initiated Method" and "Node Initiated Method": the node's loop over the
-// host's messages (polygon packets or object descriptions), each rendered into the node's full
-// frame buffer, until the host's end marker; then the hierarchical merge.
+// Blazek 1991, ch. V: what a node does with the host's messages in the three methods that deal the
+// object set ("Host Initiated Method", "Node Initiated Method", "Node Initiated with Object
+// Forwarding Method"): it receives packets or descriptions "in a round-robin fashion" until the
+// host's end marker, holding each in its memory while it renders it.
 #include <functional>
 
 #include "algo/algorithm.hpp"
-#include "algo/blazek_mesh.hpp"
+#include "raster/framebuffer.hpp"
+#include "raster/renderer.hpp"
 
 namespace zc::blazek {
 
-// The node side of host initiated and node initiated: a full frame buffer, every host message
-// until the end marker turned into polygons by `polygons_of` and rendered, then the hierarchical
-// merge. `tessellates`: the mesh is a tessellation held besides the message (node memory);
-// `acknowledge`: send the host an acknowledgement per message (kHostWindow).
-void render_host_messages_then_merge(NodeContext& ctx, bool tessellates, bool acknowledge,
-                                     const std::function<Mesh(const Bytes&)>& mesh_of_message);
+// A full frame buffer ("an entire frame buffer was maintained on each node"), allocated in node
+// memory and cleared (pixels_cleared charged to the current phase).
+Framebuffer full_frame_buffer(NodeContext& ctx, const NodeRenderer& nr);
+
+// Every message from the host until its end marker, each held in node memory ("host message")
+// while `render` uses it.
+void for_each_host_message(NodeContext& ctx, const std::function<void(const Message&)>& render);
 
 } // namespace zc::blazek

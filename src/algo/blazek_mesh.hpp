@@ -26,6 +26,10 @@ struct Mesh {
   }
 };
 Mesh mesh_of(const std::vector<Poly>& polys);
+// Node memory a tessellation held besides its message takes: the mesh and its projected vertices.
+inline double tessellation_bytes(const Mesh& m) {
+  return m.bytes() + double(m.vertices.size() * sizeof(ProjectedVertex));
+}
 // The polygons of a subset (indices into m.tris) of a mesh, to be sent.
 std::vector<Poly> polys_of(const Mesh& m, const std::vector<std::uint32_t>& subset);
 

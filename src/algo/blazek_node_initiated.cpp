@@ -1,8 +1,13 @@
-// Blazek 1991, ch. V "Node Initiated Method": the host sends only primitive descriptions (about
-// 100 bytes each) round-robin; the nodes tessellate and render them, then merge hierarchically.
+// Blazek 1991, ch. V "Node Initiated Method": "the host distributes only the primitive's
+// description to the nodes in a round-robin fashion" (object description packets, about 100 bytes
+// each); each node tessellates and renders them into its own full frame buffer; the frame buffers
+// are merged hierarchically, as in the host initiated method.
 #include "algo/blazek_common.hpp"
 #include "algo/blazek_host_messages.hpp"
+#include "algo/blazek_merge_paste.hpp"
+#include "algo/blazek_mesh.hpp"
 #include "algo/blazek_methods.hpp"
+#include "algo/blazek_render.hpp"
 #include "algo/blazek_wire.hpp"
 
 namespace zc::blazek {
@@ -23,9 +28,22 @@ void describe_round_robin(NodeContext& ctx) {
     c.send(n, kTagHost, Bytes{});
 }
 
+// It "moves the tessellation process from the host to the nodes": each description is tessellated,
+// its polygons held while they are rendered into the node's full frame buffer.
 void node_initiated_node(NodeContext& ctx) {
-  render_host_messages_then_merge(ctx, true, false,
-                                  [&](const Bytes& b) { return object_mesh(ctx, b); });
+  check_scene(ctx.scene());
+  const NodeRenderer nr(ctx.scene());
+  Framebuffer fb;
+  {
+    auto ph = ctx.phase("render"); // the clear of the new frame buffer is the phase's
+    fb = full_frame_buffer(ctx, nr);
+    for_each_host_message(ctx, [&](const Message& description) {
+      const Mesh m = object_mesh(ctx, description.payload);
+      const Held held(ctx, tessellation_bytes(m), "polygons");
+      render_mesh(ctx, nr, ProjectedMesh(ctx, nr, m), fb);
+    });
+  }
+  hierarchical_merge(ctx, std::move(fb));
 }
 
 } // namespace zc::blazek
