@@ -8,9 +8,12 @@
 //   output              the picture gathered to node 0, and the paper's measures
 #include "algo/kurc_pixel_merging.hpp"
 
+#include "algo/composite.hpp"
 #include "algo/kurc_merge_scheme.hpp"
 #include "comm/collectives.hpp"
 #include "comm/wire.hpp"
+#include "compositing/gather.hpp"
+#include "compositing/winning_pixels.hpp"
 #include "util/error.hpp"
 
 namespace zc {
@@ -77,23 +80,18 @@ void output(NodeContext& ctx, const NodeRenderer& nr, MergeScheme& scheme,
   Comm& c = ctx.comm();
   Counters packed;
   // Sent as the paper's records (9-byte pixels); zcube's copies are counted as it makes them.
-  Message part = sparse_message(serialize_sparse(scheme.final_pixels(packed)));
-  packed.bytes_packed += part.payload.size();
+  Message part = compositing::pack_pixels(scheme.final_pixels(packed), compositing::sparse_message,
+                                          kurc_pixel_records(), packed);
   ctx.charge(packed);
-  auto parts = coll::gatherv(c, 0, std::move(part));
+  auto parts = compositing::gather(c, 0, std::move(part));
   auto step_max = coll::allreduce(c, measures.step_bytes, coll::Op::Max);
   auto loads = coll::gatherv(c, 0, pack(std::vector<std::uint64_t>{measures.merge_load, tpg}));
   if (c.rank() != 0) return;
-  // Node 0 clears the picture and copies every part out of its message into it (the pixel records
-  // unpacked, then written to their locations: two passes over the bytes).
+  // Node 0 clears the picture and pastes every part into it.
   Framebuffer img = nr.make_framebuffer(RowSet::all(nr.height()));
   Counters w;
   w.pixels_cleared = img.pixel_count();
-  for (const auto& m : parts) {
-    const Bytes& b = m.payload;
-    scatter_active(deserialize_sparse(b.data(), b.size(), nr.width(), 0, nr.height()), img);
-    w.bytes_packed += 2 * b.size();
-  }
+  compositing::paste(parts, img, nr.height(), w);
   ctx.charge(w);
   record_measures(ctx, scheme, img, measures.step_bytes.size(), step_max, loads);
   ctx.deliver_image(0, std::move(img));

@@ -6,6 +6,7 @@
 #include "algo/pingpong.hpp"
 #include "algo/scanline_baseline.hpp"
 #include "algo/sequential.hpp"
+#include "algo/sort_last.hpp"
 #include "util/error.hpp"
 
 namespace zc {
@@ -17,6 +18,8 @@ const std::vector<Algorithm>& algorithms() {
     for (auto& a : kurc_algorithms())
       v.push_back(a);
     for (auto& a : blazek_algorithms())
+      v.push_back(a);
+    for (auto& a : sort_last_algorithms())
       v.push_back(a);
     return v;
   }();

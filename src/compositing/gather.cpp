@@ -1,0 +1,26 @@
+#include "compositing/gather.hpp"
+
+#include "comm/collectives.hpp"
+
+namespace zc::compositing {
+
+Message pack_pixels(const ActivePixels& mine, Message (*charge)(Bytes, const PixelRecords&),
+                    const PixelRecords& records, Counters& w) {
+  Message part = charge(serialize_sparse(mine), records);
+  w.bytes_packed += part.payload.size();
+  return part;
+}
+
+std::vector<Message> gather(Comm& c, int root, Message part) {
+  return coll::gatherv(c, root, std::move(part));
+}
+
+void paste(const std::vector<Message>& parts, Framebuffer& picture, int height, Counters& w) {
+  for (const auto& m : parts) {
+    const Bytes& b = m.payload;
+    scatter_active(deserialize_sparse(b.data(), b.size(), picture.width(), 0, height), picture);
+    w.bytes_packed += 2 * b.size();
+  }
+}
+
+} // namespace zc::compositing
