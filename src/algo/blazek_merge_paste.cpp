@@ -4,37 +4,28 @@
 
 #include "algo/blazek_common.hpp"
 #include "algo/blazek_wire.hpp"
+#include "algo/composite.hpp"
 #include "comm/collectives.hpp"
 #include "comm/wire.hpp"
+#include "compositing/dense.hpp"
+#include "compositing/gather.hpp"
 
 namespace zc::blazek {
 
+// Tree compositing of the dense frame buffers (compositing/tree.cpp), each location charged as
+// the thesis's frame-buffer pixel; every location is compared (Algorithm 4), straight out of the
+// received buffer, and charged before the node sends its merged buffer on.
 void hierarchical_merge(NodeContext& ctx, Framebuffer fb) {
-  Comm& c = ctx.comm();
-  const int r = c.rank();
   auto ph = ctx.phase("merge");
-  for (int i = 0; (1 << i) < c.size(); ++i) {
-    const int bit = 1 << i;
-    if (r & (bit - 1)) break; // already sent its buffer
-    if (r & bit) {
-      // The frame buffer is sent in place (its arrays are contiguous): no packing is charged;
-      // zcube's copy into one payload is an artefact of its wire format.
-      // Charged as the thesis's frame buffer (records.hpp), without zcube's triangle ids.
-      c.send(r ^ bit, kTagMerge,
-             Message{fb.pack_locations(0, fb.pixel_count()), std::size_t(frame_buffer_bytes(fb))});
-      return;
-    }
-    if ((r ^ bit) >= c.size()) continue; // no partner when P is not a power of two (a ring of 3)
-    const Message got = c.recv_message(r ^ bit, kTagMerge);
-    const Bytes& in = got.payload;
-    ctx.alloc(double(got.charged), "merge receive buffer");
-    Counters k;
-    // Every location is compared (Algorithm 4), straight out of the received buffer.
-    k.merge_ops = fb.merge_locations(in, 0);
-    ctx.charge(k);
-    ctx.release(double(got.charged));
-  }
-  if (r == 0) ctx.deliver_image(0, std::move(fb));
+  compositing::PixelRecords rec;
+  rec.location = records::blazek::kFrameBufferPixel;
+  const int height = fb.rows().end;
+  auto picture = compositing::dense(std::move(fb), rec);
+  ContextMemory memory(ctx);
+  Counters w;
+  compositing::Node node{ctx.comm(), memory, w, [&](const Counters& k) { ctx.charge(k); }};
+  compositing::tree().composite(node, *picture, std::vector<int>(std::size_t(height), 0));
+  if (ctx.rank() == 0) ctx.deliver_image(0, std::move(compositing::framebuffer(*picture)));
 }
 
 void paste_at_node0(NodeContext& ctx, const Framebuffer& part) {
@@ -43,7 +34,7 @@ void paste_at_node0(NodeContext& ctx, const Framebuffer& part) {
   // in place to node 0, which displays them: no packing is charged. Only colour travels (ch. V);
   // the picture and its depth map are the rows each node rendered, handed over once sent (the
   // colour node 0 receives is these rows' colour, byte for byte).
-  (void)coll::gatherv(ctx.comm(), 0, part.rgb());
+  (void)compositing::gather(ctx.comm(), 0, uncharged(part.rgb()));
   (void)coll::gatherv(
       ctx.comm(), 0,
       pack(std::vector<int>{part.rows().begin, part.rows().end, part.rows().stride}));

@@ -56,6 +56,7 @@ public:
   }
 
   ActivePixels final_pixels(Counters& w) override;
+  Framebuffer& framebuffer() { return full_; }
 
 private:
   bool sends(const Routing& r, int y, int k) const { return held_[y] && r.dest[y] == k; }
@@ -131,6 +132,10 @@ ActivePixels Dense::final_pixels(Counters& w) {
 
 std::unique_ptr<Picture> dense(Framebuffer full, const PixelRecords& records) {
   return std::make_unique<Dense>(std::move(full), records);
+}
+
+Framebuffer& framebuffer(Picture& dense_picture) {
+  return dynamic_cast<Dense&>(dense_picture).framebuffer();
 }
 
 } // namespace zc::compositing

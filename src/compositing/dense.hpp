@@ -12,5 +12,8 @@ namespace zc::compositing {
 
 // `full`: the node's z-buffer over every row of the screen (its memory the caller's).
 std::unique_ptr<Picture> dense(Framebuffer full, const PixelRecords& records);
+// The z-buffer a dense picture holds (the whole screen; its rows not held are stale): for a
+// strategy that ends at one node (tree), the merged picture itself.
+Framebuffer& framebuffer(Picture& dense_picture);
 
 } // namespace zc::compositing

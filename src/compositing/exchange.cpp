@@ -18,6 +18,7 @@ void exchange(Node& n, Comm& group, Picture& p, const std::vector<int>& dest, Me
   for (int k = 0; k < P; ++k)
     if (k != r) in.push_back(std::move(msgs[std::size_t(k)]));
   m.merge_load += p.merge(std::move(in), how, n);
+  end_round(n);
 }
 
 } // namespace zc::compositing

@@ -33,13 +33,14 @@ Measures composite(Node& n, Picture& p, const std::vector<int>& owner) {
       in.push_back(c.recv_message(partner, kTagBase + 64));
     }
     m.merge_load += p.merge(std::move(in), Merge::Lists, n);
+    end_round(n);
   }
   if (folded) return m;
   std::vector<int> members(static_cast<std::size_t>(low));
   for (int k = 0; k < low; ++k)
     members[std::size_t(k)] = k;
   GroupComm group(c, members);
-  Node g{group, n.memory, n.work};
+  Node g{group, n.memory, n.work, n.charge_round};
   Measures swap = binary_swap().composite(g, p, owner);
   m.step_bytes.insert(m.step_bytes.end(), swap.step_bytes.begin(), swap.step_bytes.end());
   m.merge_load += swap.merge_load;

@@ -6,6 +6,7 @@
 // representation (dense.cpp, winning_pixels.cpp, run_length.cpp) decides how rows travel, what
 // the modelled machine is charged for them and how they merge. docs/compositing.md.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -24,12 +25,21 @@ public:
 };
 
 // What a strategy sees of a node: the group's Comm (group ranks 0..size-1, group.hpp), its
-// memory, and the operations it counts (charged by the caller when its phase ends).
+// memory, and the operations it counts. Without charge_round the caller charges them when its
+// phase ends (Kurc et al.'s programs, as calibrated); with it, after each round's merge, before the
+// node sends again (Blazek's merge: a node forwards its buffer once it has merged).
 struct Node {
   Comm& comm;
   Memory& memory;
   Counters& work;
+  std::function<void(const Counters&)> charge_round = {};
 };
+// A round's merge is done: its work charged now when the node charges by round.
+inline void end_round(Node& n) {
+  if (!n.charge_round || n.work == Counters{}) return;
+  n.charge_round(n.work);
+  n.work = Counters{};
+}
 
 // What compositing measured on a node: the bytes it was charged for at each communication step
 // (Kurc et al.'s Fig. 1) and its merge load (the pixels or locations it merged: Fig. 2).

@@ -35,7 +35,7 @@ Measures composite(Node& n, Picture& p, const std::vector<int>& owner,
   for (int j = 0, stride = 1; j < int(rounds.size()); stride *= rounds[std::size_t(j)], ++j) {
     const int k = rounds[std::size_t(j)];
     GroupComm group(n.comm, digit_group(n.comm.rank(), rounds, j));
-    Node g{group, n.memory, n.work};
+    Node g{group, n.memory, n.work, n.charge_round};
     // The member of this round's group whose digit j is the owner's.
     for (std::size_t y = 0; y < owner.size(); ++y)
       dest[y] = owner[y] < 0 ? -1 : (owner[y] / stride) % k;

@@ -27,6 +27,7 @@ Measures composite(Node& n, Picture& p, const std::vector<int>& owner) {
       in.push_back(c.recv_message(partner, kTagBase + 128 + level));
     }
     m.merge_load += p.merge(std::move(in), Merge::Lists, n);
+    end_round(n);
   }
   return m;
 }
