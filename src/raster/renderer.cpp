@@ -36,17 +36,54 @@ template <class F> void run_workers(int n, F&& f) {
     t.join();
 }
 
+// A worker's screen triangles by band of rows: band k's are idx[start[k] .. start[k + 1]), in the
+// order they were set up (so every pixel sees its triangles in scene order, as on one thread).
+struct BandBins {
+  std::vector<std::uint32_t> start, idx;
+
+  void fill(const TriangleBatch& b, int band_h, int bands) {
+    start.assign(std::size_t(bands) + 1, 0);
+    for (const auto& t : b.tris)
+      for (int k = t.ymin / band_h; k <= t.ymax / band_h; ++k)
+        ++start[k + 1];
+    for (int k = 0; k < bands; ++k)
+      start[k + 1] += start[k];
+    idx.resize(start[bands]);
+    std::vector<std::uint32_t> at(start.begin(), start.end() - 1);
+    for (std::uint32_t i = 0; i < b.tris.size(); ++i)
+      for (int k = b.tris[i].ymin / band_h; k <= b.tris[i].ymax / band_h; ++k)
+        idx[at[k]++] = i;
+  }
+};
+
+// What a frame needs besides the image, kept between the frames of render_scene_into.
+struct RenderScratch {
+  std::vector<ProjectedVertex> pv;
+  std::vector<TriangleBatch> batches;
+  std::vector<BandBins> bins;
+};
+
+Counters render_into(const Scene& scene, int threads, Framebuffer& image, RenderScratch& scratch);
+
 } // namespace
 
 RenderResult render_scene(const Scene& scene, int threads) {
   const auto t0 = std::chrono::steady_clock::now();
   RenderResult res;
-  res.counters = render_scene_into(scene, threads, res.image);
+  RenderScratch scratch;
+  res.counters = render_into(scene, threads, res.image, scratch);
   res.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }
 
 Counters render_scene_into(const Scene& scene, int threads, Framebuffer& image) {
+  thread_local RenderScratch scratch; // no allocation nor page fault for the next frame's buffers
+  return render_into(scene, threads, image, scratch);
+}
+
+namespace {
+
+Counters render_into(const Scene& scene, int threads, Framebuffer& image, RenderScratch& scratch) {
   threads = std::max(1, threads);
   const NodeRenderer nr(scene);
   // A frame buffer of the right shape is cleared band by band by the threads that draw the bands
@@ -64,20 +101,24 @@ Counters render_scene_into(const Scene& scene, int threads, Framebuffer& image) 
   std::vector<std::uint64_t> covered(threads, 0);
 
   // 1. Vertex stage, contiguous chunks per thread.
-  std::vector<ProjectedVertex> pv(scene.vertices.size());
+  std::vector<ProjectedVertex>& pv = scratch.pv;
+  pv.resize(scene.vertices.size());
   run_workers(threads, [&](int w) {
     const std::size_t n = pv.size(), lo = n * w / threads, hi = n * (w + 1) / threads;
     for (std::size_t i = lo; i < hi; ++i)
       pv[i] = nr.project(scene.vertices[i], tc[w]);
   });
 
-  // 2. Triangles in chunks: set-up split by triangle ranges, rasterisation split by row bands.
+  // 2. Triangles in chunks: set-up split by triangle ranges, each worker's triangles binned by
+  // band, rasterisation split by row bands.
   const bool textured = scene.textured();
   const int band_h =
       threads == 1 ? std::max(1, scene.height) : std::max(4, scene.height / (threads * 8));
   const int bands = (scene.height + band_h - 1) / band_h;
   constexpr std::size_t kChunk = 1 << 16;
-  std::vector<TriangleBatch> batches(threads);
+  std::vector<TriangleBatch>& batches = scratch.batches;
+  batches.resize(threads);
+  scratch.bins.resize(threads);
   for (std::size_t c0 = 0; c0 < scene.triangles.size(); c0 += kChunk) {
     const std::size_t c1 = std::min(scene.triangles.size(), c0 + kChunk);
     run_workers(threads, [&](int w) {
@@ -93,6 +134,7 @@ Counters render_scene_into(const Scene& scene, int threads, Framebuffer& image) 
             uv[k] = &scene.uvs[t.v[k]];
         nr.setup(std::uint32_t(i), t, p, textured ? uv : nullptr, b, tc[w]);
       }
+      if (bands > 1) scratch.bins[w].fill(b, band_h, bands);
     });
     std::atomic<int> next{0};
     run_workers(threads, [&](int w) {
@@ -100,10 +142,17 @@ Counters render_scene_into(const Scene& scene, int threads, Framebuffer& image) 
         const RowSet rows =
             RowSet::band(band * band_h, std::min(scene.height, (band + 1) * band_h));
         if (clear_bands && c0 == 0) image.clear_rows(rows.begin, rows.end, scene.background);
-        for (const auto& b : batches)
-          for (const auto& t : b.tris)
-            if (t.ymax >= rows.begin && t.ymin < rows.end)
+        for (int k = 0; k < threads; ++k) {
+          const TriangleBatch& b = batches[k];
+          if (bands == 1) {
+            for (const auto& t : b.tris)
               draw_triangle(t, b, nr.shade(), rows, image, tc[w], &covered[w]);
+            continue;
+          }
+          const BandBins& bin = scratch.bins[k];
+          for (std::uint32_t j = bin.start[band]; j < bin.start[band + 1]; ++j)
+            draw_triangle(b.tris[bin.idx[j]], b, nr.shade(), rows, image, tc[w], &covered[w]);
+        }
       }
     });
   }
@@ -116,5 +165,7 @@ Counters render_scene_into(const Scene& scene, int threads, Framebuffer& image) 
     total.pixels_final += n;
   return total;
 }
+
+} // namespace
 
 } // namespace zc

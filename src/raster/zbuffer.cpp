@@ -1,40 +1,171 @@
 #include "raster/zbuffer.hpp"
 
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
 namespace zc {
 
 namespace {
 
-// The span loop with every plane coefficient, frame-buffer pointer and counter in a local: the
-// colour stores go through uint8_t pointers, which may alias anything, so values read through
-// references would be reloaded after every pixel. Same arithmetic, same order, same bits as
-// RowShader (depth, then (r0 + ax*x) * kd per channel).
+// floor(n / d) and the remainder in [0, d), for d > 0.
+inline void floor_divmod(std::int64_t n, std::int64_t d, std::int64_t& q, std::int64_t& r) {
+  q = n / d;
+  r = n - q * d;
+  if (r < 0) {
+    --q;
+    r += d;
+  }
+}
+
+} // namespace
+
+EdgeWalk::EdgeWalk(const ScreenTriangle& t, int e, int y, int stride) {
+  const std::int64_t py = std::int64_t(y) * kSub + kSub / 2;
+  const std::int64_t K = t.A[e] * (kSub / 2) + t.B[e] * py + t.C[e] - t.bias[e];
+  const std::int64_t dK = t.B[e] * kSub * stride;
+  sign_ = t.A[e] > 0 ? 1 : (t.A[e] < 0 ? -1 : 0);
+  d_ = sign_ == 0 ? 1 : (t.A[e] > 0 ? t.A[e] : -t.A[e]) * kSub;
+  floor_divmod(K, d_, q_, r_);
+  floor_divmod(dK, d_, dq_, dr_);
+}
+
+namespace {
+
+// The constants of one untextured triangle's span loop, in locals: the colour stores go through
+// uint8_t pointers, which may alias anything, so values read through references would be reloaded
+// after every pixel.
+struct FlatSpan {
+  float* depth;
+  std::uint32_t* ids;
+  std::uint8_t* rgb;
+  double zax, rax, gax, bax;
+  glm::vec3 kd;
+  std::uint32_t id;
+};
+
+// Pixels [x0, x1] of one row from index i, one at a time: the same arithmetic, in the same order,
+// as RowShader (depth, then (r0 + ax*x) * kd per channel).
+void flat_span(const FlatSpan& s, const double (&row)[4], int x0, int x1, std::size_t i,
+               std::uint64_t& written, std::uint64_t& first) {
+  for (int x = x0; x <= x1; ++x, ++i) {
+    const float z = static_cast<float>(row[0] + s.zax * x);
+    if (!in_front(z, s.id, s.depth[i], s.ids[i])) continue;
+    const float r = float(row[1] + s.rax * x) * s.kd.x;
+    const float g = float(row[2] + s.gax * x) * s.kd.y;
+    const float b = float(row[3] + s.bax * x) * s.kd.z;
+    first += s.ids[i] == kNoTriangle;
+    s.depth[i] = z;
+    s.ids[i] = s.id;
+    s.rgb[3 * i] = unit_to_byte(r);
+    s.rgb[3 * i + 1] = unit_to_byte(g);
+    s.rgb[3 * i + 2] = unit_to_byte(b);
+    ++written;
+  }
+}
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define ZC_FLAT_SPAN_AVX2 1
+// The same pixels eight at a time with AVX2, bit for bit: each lane does flat_span's operations in
+// its order and precision (double multiply then add, rounded to float, float multiply; no fused
+// multiply-add, which would round once instead of twice). max(c, 0) then min(, 1) is unit_to_byte's
+// clamp, NaN and -0 included (MAXPS returns its second operand for NaN and for two zeros).
+__attribute__((target("avx2"))) inline __m256 plane8(double a0, __m256d ax, __m256d xa,
+                                                     __m256d xb) {
+  const __m256d a = _mm256_set1_pd(a0);
+  const __m128 lo = _mm256_cvtpd_ps(_mm256_add_pd(a, _mm256_mul_pd(ax, xa)));
+  const __m128 hi = _mm256_cvtpd_ps(_mm256_add_pd(a, _mm256_mul_pd(ax, xb)));
+  return _mm256_insertf128_ps(_mm256_castps128_ps256(lo), hi, 1);
+}
+
+__attribute__((target("avx2"))) inline __m256i to_bytes8(__m256 c) {
+  const __m256 v = _mm256_min_ps(_mm256_max_ps(c, _mm256_setzero_ps()), _mm256_set1_ps(1.f));
+  return _mm256_cvttps_epi32(
+      _mm256_add_ps(_mm256_mul_ps(v, _mm256_set1_ps(255.f)), _mm256_set1_ps(0.5f)));
+}
+
+__attribute__((target("avx2"))) void flat_span_avx2(const FlatSpan& s, const double (&row)[4],
+                                                    int x0, int x1, std::size_t i,
+                                                    std::uint64_t& written, std::uint64_t& first) {
+  const __m256d zax = _mm256_set1_pd(s.zax), rax = _mm256_set1_pd(s.rax);
+  const __m256d gax = _mm256_set1_pd(s.gax), bax = _mm256_set1_pd(s.bax);
+  const __m256 kr = _mm256_set1_ps(s.kd.x), kg = _mm256_set1_ps(s.kd.y);
+  const __m256 kb = _mm256_set1_ps(s.kd.z);
+  const __m256i sign = _mm256_set1_epi32(std::int32_t(0x80000000u));
+  const __m256i id = _mm256_set1_epi32(std::int32_t(s.id));
+  const __m256i id_biased = _mm256_xor_si256(id, sign);
+  const __m256i none = _mm256_set1_epi32(-1); // kNoTriangle
+  const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  for (int x = x0; x <= x1; x += 8, i += 8) {
+    const __m256i live = _mm256_cmpgt_epi32(_mm256_set1_epi32(x1 - x + 1), lane);
+    const __m256d xa = _mm256_add_pd(_mm256_set1_pd(double(x)), _mm256_setr_pd(0, 1, 2, 3));
+    const __m256d xb = _mm256_add_pd(xa, _mm256_set1_pd(4.0));
+    const __m256 z = plane8(row[0], zax, xa, xb);
+    const __m256 zs = _mm256_maskload_ps(s.depth + i, live);
+    const __m256i ids = _mm256_maskload_epi32(reinterpret_cast<const int*>(s.ids + i), live);
+    // in_front: z < zs, or z == zs and id < ids (unsigned: compared with the sign bit flipped).
+    const __m256i id_lt = _mm256_cmpgt_epi32(_mm256_xor_si256(ids, sign), id_biased);
+    const __m256 lt = _mm256_cmp_ps(z, zs, _CMP_LT_OQ);
+    const __m256 eq = _mm256_cmp_ps(z, zs, _CMP_EQ_OQ);
+    const __m256i win =
+        _mm256_and_si256(live, _mm256_or_si256(_mm256_castps_si256(lt),
+                                               _mm256_and_si256(_mm256_castps_si256(eq), id_lt)));
+    const int m = _mm256_movemask_ps(_mm256_castsi256_ps(win));
+    if (m == 0) continue;
+    alignas(32) std::int32_t r[8], g[8], b[8];
+    _mm256_store_si256(reinterpret_cast<__m256i*>(r),
+                       to_bytes8(_mm256_mul_ps(plane8(row[1], rax, xa, xb), kr)));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(g),
+                       to_bytes8(_mm256_mul_ps(plane8(row[2], gax, xa, xb), kg)));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(b),
+                       to_bytes8(_mm256_mul_ps(plane8(row[3], bax, xa, xb), kb)));
+    const int fresh = _mm256_movemask_ps(
+        _mm256_castsi256_ps(_mm256_and_si256(win, _mm256_cmpeq_epi32(ids, none))));
+    _mm256_maskstore_ps(s.depth + i, win, z);
+    _mm256_maskstore_epi32(reinterpret_cast<int*>(s.ids + i), win, id);
+    first += std::uint64_t(__builtin_popcount(unsigned(fresh)));
+    written += std::uint64_t(__builtin_popcount(unsigned(m)));
+    for (int k = 0; k < 8; ++k)
+      if (m >> k & 1) {
+        std::uint8_t* p = s.rgb + 3 * (i + k);
+        p[0] = std::uint8_t(r[k]);
+        p[1] = std::uint8_t(g[k]);
+        p[2] = std::uint8_t(b[k]);
+      }
+  }
+}
+
+bool has_avx2() {
+  static const bool yes = __builtin_cpu_supports("avx2");
+  return yes;
+}
+#endif
+
 void draw_untextured(const ScreenTriangle& t, const ShadeContext& ctx, const RowSet& rows,
                      Framebuffer& fb, Counters& c, std::uint64_t* newly_covered) {
-  float* const depth = fb.depth().data();
-  std::uint32_t* const ids = fb.ids().data();
-  std::uint8_t* const rgb = fb.rgb().data();
-  const glm::vec3 kd = (*ctx.materials)[t.material].kd;
-  const std::uint32_t id = t.id;
-  const double zax = t.z.ax, rax = t.r.ax, gax = t.g.ax, bax = t.b.ax;
+  const FlatSpan s{fb.depth().data(),
+                   fb.ids().data(),
+                   fb.rgb().data(),
+                   t.z.ax,
+                   t.r.ax,
+                   t.g.ax,
+                   t.b.ax,
+                   (*ctx.materials)[t.material].kd,
+                   t.id};
+#ifdef ZC_FLAT_SPAN_AVX2
+  const bool avx2 = has_avx2();
+#endif
   std::uint64_t spans = 0, generated = 0, written = 0, first = 0;
   for_each_span(t, rows, fb.width(), [&](int y, int x0, int x1) {
     ++spans;
-    const double z0 = t.z.row(y), r0 = t.r.row(y), g0 = t.g.row(y), b0 = t.b.row(y);
-    std::size_t i = fb.index(x0, y);
-    for (int x = x0; x <= x1; ++x, ++i) {
-      const float z = static_cast<float>(z0 + zax * x);
-      if (!in_front(z, id, depth[i], ids[i])) continue;
-      const float r = float(r0 + rax * x) * kd.x;
-      const float g = float(g0 + gax * x) * kd.y;
-      const float b = float(b0 + bax * x) * kd.z;
-      first += ids[i] == kNoTriangle;
-      depth[i] = z;
-      ids[i] = id;
-      rgb[3 * i] = unit_to_byte(r);
-      rgb[3 * i + 1] = unit_to_byte(g);
-      rgb[3 * i + 2] = unit_to_byte(b);
-      ++written;
-    }
+    const double row[4] = {t.z.row(y), t.r.row(y), t.g.row(y), t.b.row(y)};
+    const std::size_t i = fb.index(x0, y);
+#ifdef ZC_FLAT_SPAN_AVX2
+    if (avx2)
+      flat_span_avx2(s, row, x0, x1, i, written, first);
+    else
+#endif
+      flat_span(s, row, x0, x1, i, written, first);
     generated += std::uint64_t(x1 - x0 + 1);
   });
   c.spans += spans;

@@ -1,6 +1,9 @@
 #pragma once
 // The scanline z-buffer (Charles et al. §2): every screen triangle is scanned row by row over the
 // rows of the frame buffer, and each generated pixel is kept if it is in front of the stored one.
+#include <algorithm>
+#include <cstdint>
+
 #include "raster/framebuffer.hpp"
 #include "raster/setup.hpp"
 #include "raster/shade.hpp"
@@ -8,14 +11,56 @@
 
 namespace zc {
 
-// Calls f(y, x0, x1) for every non-empty span of `t` on the rows of `rows`.
+// One edge of a screen triangle walked down its rows: the span bound this edge sets on row y is
+// floor(K(y) / D), K growing by the same integer every row, kept as quotient and remainder. Exact
+// integers throughout: the bounds ScreenTriangle::span computes, without a division per row.
+class EdgeWalk {
+public:
+  EdgeWalk() = default;
+  // Edge e of t from row y on, stepping `stride` rows at a time.
+  EdgeWalk(const ScreenTriangle& t, int e, int y, int stride);
+  // Narrows [lo, hi] to this edge on the current row (false: the row holds no pixel), then steps.
+  bool clip_and_step(std::int64_t& lo, std::int64_t& hi, std::int64_t width) {
+    bool ok = true;
+    if (sign_ > 0)
+      lo = std::max(lo, -std::clamp(q_, -width, std::int64_t(0)));
+    else if (sign_ < 0)
+      hi = std::min(hi, std::clamp(q_, std::int64_t(-1), width - 1));
+    else
+      ok = q_ >= 0;
+    q_ += dq_;
+    r_ += dr_;
+    if (r_ >= d_) {
+      r_ -= d_;
+      ++q_;
+    }
+    return ok;
+  }
+
+private:
+  int sign_ = 0;        // sign of the edge's A: a left bound (+), a right bound (-), horizontal (0)
+  std::int64_t d_ = 1;  // divisor |A| * kSub (1 for a horizontal edge: q_ is K itself)
+  std::int64_t q_ = 0;  // floor(K / d_) on the current row
+  std::int64_t r_ = 0;  // K - q_ * d_, in [0, d_)
+  std::int64_t dq_ = 0; // the step of K a row, as quotient and remainder of d_
+  std::int64_t dr_ = 0;
+};
+
+// Calls f(y, x0, x1) for every non-empty span of `t` on the rows of `rows`: the spans of
+// ScreenTriangle::span, row after row.
 template <class F>
 void for_each_span(const ScreenTriangle& t, const RowSet& rows, int width, F&& f) {
   int y = rows.first_from(t.ymin);
   const int yend = std::min(t.ymax + 1, rows.end);
+  if (y >= yend) return;
+  EdgeWalk e[3] = {{t, 0, y, rows.stride}, {t, 1, y, rows.stride}, {t, 2, y, rows.stride}};
+  const std::int64_t w = width;
   for (; y < yend; y += rows.stride) {
-    int x0, x1;
-    if (t.span(y, width, x0, x1)) f(y, x0, x1);
+    std::int64_t lo = 0, hi = w - 1;
+    const bool ok0 = e[0].clip_and_step(lo, hi, w);
+    const bool ok1 = e[1].clip_and_step(lo, hi, w);
+    const bool ok2 = e[2].clip_and_step(lo, hi, w);
+    if (ok0 && ok1 && ok2 && lo <= hi) f(y, int(lo), int(hi));
   }
 }
 
