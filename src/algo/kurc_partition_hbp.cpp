@@ -1,5 +1,6 @@
 // Kurc, Aykanat, Ozguc §4.2: heuristic bin packing of the scanlines for pixel merging.
 #include <algorithm>
+#include <functional>
 #include <numeric>
 
 #include "algo/kurc_partition.hpp"
@@ -11,12 +12,17 @@ std::vector<int> heuristic_bin_packing(const std::vector<std::uint64_t>& row_pix
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return row_pixels[a] > row_pixels[b]; });
-  std::vector<std::uint64_t> load(nodes, 0);
+  // The least-loaded node first, the lower number on a tie: a min-heap of (load, node).
+  using Bin = std::pair<std::uint64_t, int>;
+  std::vector<Bin> heap(std::size_t(std::max(nodes, 0)));
+  for (int n = 0; n < nodes; ++n)
+    heap[std::size_t(n)] = {0, n};
   std::vector<int> owner(row_pixels.size(), 0);
   for (int y : order) {
-    const int n = int(std::min_element(load.begin(), load.end()) - load.begin());
-    owner[y] = n;
-    load[n] += row_pixels[y];
+    std::pop_heap(heap.begin(), heap.end(), std::greater<>());
+    owner[y] = heap.back().second;
+    heap.back().first += row_pixels[y];
+    std::push_heap(heap.begin(), heap.end(), std::greater<>());
   }
   return owner;
 }

@@ -1,6 +1,7 @@
 #include "algo/algorithm.hpp"
 #include "algo/blazek_methods.hpp"
 #include "algo/comm_check.hpp"
+#include "algo/compositing_study.hpp"
 #include "algo/elastic.hpp"
 #include "algo/kurc_pixel_merging.hpp"
 #include "algo/pingpong.hpp"
@@ -20,6 +21,8 @@ const std::vector<Algorithm>& algorithms() {
     for (auto& a : blazek_algorithms())
       v.push_back(a);
     for (auto& a : sort_last_algorithms())
+      v.push_back(a);
+    for (auto& a : compositing_study_algorithms())
       v.push_back(a);
     return v;
   }();

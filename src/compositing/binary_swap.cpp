@@ -3,6 +3,7 @@
 // ZBUF-EXC): log2 P stages; at stage i a node keeps the rows whose owner agrees with it on bit i,
 // sends the others to its neighbour over channel i and merges what arrives (two x-sorted lists
 // into one). The nodes must be a power of two (folding.cpp composites any number).
+#include "compositing/group.hpp"
 #include "compositing/strategy.hpp"
 
 namespace zc::compositing {
@@ -15,14 +16,17 @@ Measures composite(Node& n, Picture& p, const std::vector<int>& owner) {
   Measures m;
   std::vector<int> dest(owner.size());
   for (int bit = 1, stage = 0; bit < c.size(); bit <<= 1, ++stage) {
-    const int partner = r ^ bit;
+    // The pair as a group of two: rank 0 the node with bit i clear (it keeps the rows whose owner
+    // has bit i clear), rank 1 the other.
+    GroupComm pair(c, {r & ~bit, r | bit});
+    const int self = pair.rank(), partner = 1 - self;
     for (std::size_t y = 0; y < owner.size(); ++y)
-      dest[y] = owner[y] < 0 ? -1 : (owner[y] & bit) != (r & bit) ? partner : r;
-    std::vector<Message> out = p.split({dest, r, c.size(), 1}, Merge::Lists, n);
+      dest[y] = owner[y] < 0 ? -1 : (owner[y] & bit) ? 1 : 0;
+    std::vector<Message> out = p.split({dest, self, 2, 1}, Merge::Lists, n);
     m.step_bytes.push_back(double(out[std::size_t(partner)].charged));
-    auto h = c.isend(partner, kTagBase + stage, std::move(out[std::size_t(partner)]));
+    auto h = pair.isend(partner, kTagBase + stage, std::move(out[std::size_t(partner)]));
     std::vector<Message> in;
-    in.push_back(c.recv_message(partner, kTagBase + stage));
+    in.push_back(pair.recv_message(partner, kTagBase + stage));
     h->wait();
     m.merge_load += p.merge(std::move(in), Merge::Lists, n);
     end_round(n);

@@ -31,9 +31,16 @@ public:
   std::vector<Message> split(const Routing& r, Merge, Node& n) override {
     const int H = int(held_.size());
     std::vector<Message> out(std::size_t(r.parts));
+    std::vector<std::vector<std::pair<int, int>>> bands(std::size_t(r.parts));
+    for (int y = 0; y < H; ++y) {
+      const int k = held_[y] ? r.dest[y] : -1;
+      if (k < 0 || k == r.self || k >= r.parts) continue;
+      auto& b = bands[std::size_t(k)];
+      if (b.empty() || b.back().second != y) b.push_back({y, y});
+      b.back().second = y + 1;
+    }
     for (int k = 0; k < r.parts; ++k)
-      if (k != r.self)
-        out[std::size_t(k)] = pack(runs(H, [&](int y) { return sends(r, y, k); }), n);
+      if (k != r.self) out[std::size_t(k)] = pack(bands[std::size_t(k)], n);
     for (int y = 0; y < H; ++y)
       held_[y] = sends(r, y, r.self);
     kept_ = runs(H, [&](int y) { return held_[y] != 0; });

@@ -11,14 +11,15 @@ namespace zc::compositing {
 
 namespace {
 
-// True when the rows with in(y) form more than one run: such a message is gathered from several
-// places of the array (a copy); one run is sent in place, the local foremost pixels being stored
-// consecutively precisely for that (§2).
-template <class Pred> bool fragmented(int h, Pred in) {
-  int runs = 0;
-  for (int y = 0; y < h; ++y)
-    runs += in(y) && (y == 0 || !in(y - 1));
-  return runs > 1;
+// Runs of consecutive rows routed to each destination, in one pass: a message over more than one
+// run is gathered from several places of the array (a copy); one run is sent in place, the local
+// foremost pixels being stored consecutively precisely for that (§2).
+std::vector<int> runs_per_destination(const std::vector<int>& dest, int parts) {
+  std::vector<int> runs(std::size_t(parts), 0);
+  for (std::size_t y = 0; y < dest.size(); ++y)
+    if (dest[y] >= 0 && dest[y] < parts && (y == 0 || dest[y - 1] != dest[y]))
+      ++runs[std::size_t(dest[y])];
+  return runs;
 }
 
 class WinningPixels final : public Picture {
@@ -28,16 +29,14 @@ public:
   const char* representation() const override { return enc_.name; }
 
   std::vector<Message> split(const Routing& r, Merge how, Node& n) override {
-    const int H = mine_.y1 - mine_.y0;
     if (how == Merge::Zbuffer) hold_owned_zbuffer(r, n);
     auto parts = serialize_sparse_by_owner(mine_, r.dest, r.parts);
+    const std::vector<int> runs = runs_per_destination(r.dest, r.parts);
     std::vector<Message> out;
     gathered_ = 0;
     for (int k = 0; k < r.parts; ++k) {
       out.push_back(enc_.message(std::move(parts[std::size_t(k)]), rec_));
-      if (k == r.self) continue;
-      if (fragmented(H, [&](int y) { return r.dest[y] == k; }))
-        gathered_ += double(out.back().charged);
+      if (k != r.self && runs[std::size_t(k)] > 1) gathered_ += double(out.back().charged);
     }
     n.work.bytes_packed += std::uint64_t(gathered_);
     n.memory.alloc(gathered_, how == Merge::Lists ? "send buffer" : "send buffers");

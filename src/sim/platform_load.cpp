@@ -343,11 +343,14 @@ struct LinkFigures {
 // that differs from them is the one named (an edit of one link names that link).
 LinkFigures common_figures(const std::vector<LinkFigures>& links, const std::string& kind,
                            const std::string& where) {
+  // Counted in one pass (a 1024-node cube has 20,480 channels); ties go to the first link.
+  std::map<std::pair<double, double>, std::size_t> count;
+  for (const auto& l : links)
+    ++count[{l.bw, l.lat}];
   std::size_t best = 0, best_count = 0;
-  for (std::size_t i = 0; i < links.size(); ++i) {
-    const auto count = std::size_t(std::count(links.begin(), links.end(), links[i]));
-    if (count > best_count) best = i, best_count = count;
-  }
+  for (std::size_t i = 0; i < links.size(); ++i)
+    if (const std::size_t c = count[{links[i].bw, links[i].lat}]; c > best_count)
+      best = i, best_count = c;
   for (const auto& l : links)
     if (!(l == links[best]))
       throw InputError(where, 0,
