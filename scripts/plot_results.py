@@ -2,7 +2,8 @@
 """Plots of `zcube reproduce` and `zcube sweep`, drawn from their CSV files (python3-matplotlib).
 
 usage: plot_results.py [--format png|svg|pdf] [--describe OUT.json] RESULTS_DIR
-           the reproduce layout: kurc/, charles/, blazek/ (and blazek-quick/), fidelity.csv
+           the reproduce layout: kurc/, charles/, blazek/ (and blazek-quick/), compositing/,
+           fidelity.csv
        plot_results.py [--format ...] [--describe OUT.json] --sweep SWEEP.csv X Y OUT
            Y against the swept flag X, one line per combination of the other swept flags
        --gantt REPORT.json OUT (repeatable) draws that space-time diagram (plot_gantt.py) in the
@@ -461,6 +462,57 @@ def fidelity(d):
     save(fig, os.path.join(d, "fidelity.png"))
 
 
+def compositing(d, sub="compositing"):
+    """Pixel-merging time against P per machine (400x400, cube), and the best radix k."""
+    m = rows(os.path.join(d, sub, "merging.csv"))
+    if not m:
+        return
+    cube = [r for r in m if r["topology"] == "cube" and r["size"] == "400"]
+    machines = list(dict.fromkeys(r["machine"] for r in cube))
+    shown = ("pair-rs", "aapc-hbp", "binary-swap", "direct-send", "best radix-k")
+    colors = palette(set(shown))
+    fig, axes = plt.subplots(1, len(machines), figsize=(4.4 * len(machines), 4.4), squeeze=False)
+    for ax, mach in zip(axes[0], machines):
+        g = defaultdict(list)
+        best = {}
+        for r in cube:
+            if r["machine"] != mach:
+                continue
+            if r["contender"] in shown:
+                g[r["contender"]].append(r)
+            if r["contender"].startswith("radix-") or r["contender"] in ("binary-swap",
+                                                                          "direct-send"):
+                b = best.get(r["nodes"])
+                if b is None or number(r["merging_ms"]) < number(b["merging_ms"]):
+                    best[r["nodes"]] = r
+        g["best radix-k"] = list(best.values())
+        curves(ax, g, "nodes", "merging_ms", colors, logy=True)
+        ps = sorted({number(r["nodes"]) for r in cube})
+        ax.set_xticks(ps)
+        ax.set_xticklabels([str(int(x)) for x in ps])
+        ax.set_title(f"{mach}, 2 POT, 400x400")
+        ax.set_xlabel("nodes P")
+        ax.set_ylabel("pixel-merging time (ms)")
+    fig.suptitle("Compositing on the machine models: Kurç et al.'s schemes and IceT's strategies",
+                 fontsize=11)
+    figure_legend(fig, colors, ideal=False, loc="lower center", ncol=len(shown))
+    save(fig, os.path.join(d, sub, "merging.png"))
+    b = rows(os.path.join(d, sub, "best.csv"))
+    fig, ax = plt.subplots(figsize=(6, 4.4))
+    for i, mach in enumerate(dict.fromkeys(r["machine"] for r in b)):
+        sel = [r for r in b if r["machine"] == mach and r["topology"] == "cube"
+               and r["size"] == "400" and r["best_k"]]
+        ax.plot([number(r["nodes"]) for r in sel], [number(r["best_k"]) for r in sel],
+                marker="o", color="C%d" % i, label=mach)
+    ax.set_xscale("log", base=2)
+    ax.set_yscale("log", base=2)
+    ax.set_xlabel("nodes P")
+    ax.set_ylabel("fastest radix k (2: binary swap, P: direct send)")
+    ax.set_title("The best k per machine, 2 POT, 400x400")
+    ax.legend()
+    save(fig, os.path.join(d, sub, "best_k.png"))
+
+
 def run_label(run):
     """'pair-rs-1pot-ipsc2-16' -> 'pair-rs, 1pot, iPSC/2, P = 16'."""
     machines = {"ipsc2": "iPSC/2", "ipsc860": "iPSC/860", "volvox": "Volvox"}
@@ -565,12 +617,14 @@ def main(argv):
         sweep(*a.sweep)
     elif a.results:
         parts = {"kurc": kurc, "charles": charles, "blazek": blazek, "fidelity": fidelity,
-                 "calibration": calibration}
+                 "compositing": compositing, "calibration": calibration}
         for name, part in parts.items():
             if name not in a.later:
                 part(a.results)
         if os.path.isdir(os.path.join(a.results, "blazek-quick")):
             blazek(a.results, "blazek-quick")
+        if os.path.isdir(os.path.join(a.results, "compositing-quick")):
+            compositing(a.results, "compositing-quick")
         if a.later and sys.stdin.readline():
             for name in a.later:
                 parts[name](a.results)

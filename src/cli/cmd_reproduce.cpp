@@ -24,8 +24,9 @@ static int cmd_reproduce(std::vector<std::string> args) {
   o.jobs = default_jobs();
   std::string which = "all";
   bool no_plots = false, no_calibration = false;
-  app.add_option("paper", which, "kurc, charles (charles95), blazek (blazek91) or all")
-      ->check(CLI::IsMember({"kurc", "charles", "blazek", "charles95", "blazek91", "all"}))
+  app.add_option("paper", which, "kurc, charles (charles95), blazek (blazek91), compositing or all")
+      ->check(CLI::IsMember(
+          {"kurc", "charles", "blazek", "charles95", "blazek91", "compositing", "all"}))
       ->capture_default_str();
   app.add_option("--out", o.out, "output directory")->capture_default_str();
   [[maybe_unused]] auto* jobs_opt =
@@ -34,7 +35,8 @@ static int cmd_reproduce(std::vector<std::string> args) {
           ->check(CLI::Range(1, 4096))
           ->capture_default_str();
   app.add_flag("--full", o.full,
-               "Blazek's whole grid: 1..2048 spheres (about 8 minutes on two cores)");
+               "Blazek's whole grid: 1..2048 spheres (about 8 minutes on two cores); the "
+               "compositing study to 1024 nodes");
   app.add_flag("--overwrite", o.overwrite,
                "replace a paper's tables even when they hold more than this run writes (without "
                "it, such tables stay and this run's go beside them, e.g. results/blazek-quick/)");

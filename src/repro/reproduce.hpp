@@ -18,8 +18,8 @@ namespace zc {
 struct ReproduceOptions {
   std::string root = "."; // source tree: scenes/
   std::string out = "results";
-  std::vector<std::string> papers = {"kurc", "charles", "blazek"};
-  bool full = false; // Blazek's whole grid (1..2048 spheres); slow
+  std::vector<std::string> papers = {"kurc", "charles", "blazek", "compositing"};
+  bool full = false; // Blazek's whole grid (1..2048 spheres), compositing's to 1024 nodes; slow
   int jobs = 2;
   bool plots = true;
   std::string plot_format = "png"; // png, svg or pdf
@@ -65,6 +65,9 @@ PaperPlan kurc_plan(const ReproduceOptions& o);
 PaperPlan charles_plan(const ReproduceOptions& o);
 PaperPlan blazek_plan(const ReproduceOptions& o);
 PaperPlan fidelity_plan(const ReproduceOptions& o); // fidelity.csv: error against run time
+// results/compositing/: every compositing strategy on the three machines
+// (reproduce_compositing.cpp)
+PaperPlan compositing_plan(const ReproduceOptions& o);
 
 // Where a plan's files go: out/name, or out/name-quick when that would lose rows out/name holds
 // (and overwrite is not set); the note says why (empty when nothing moved).

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "algo/algorithm.hpp"
+#include "algo/compositing_study.hpp"
 #include "compositing/strategy.hpp"
 #include "sim_fixtures.hpp"
 
@@ -99,4 +100,28 @@ TEST(Compositing, RadixRounds) {
   EXPECT_EQ(radix_rounds(24, {2, 3}), (std::vector<int>{2, 3, 4}));
   EXPECT_TRUE(radix_rounds(24, {5, 2}).empty());
   EXPECT_TRUE(radix_rounds(8, {1}).empty());
+}
+
+TEST(Compositing, TheStudyTimesEveryContenderFromOneRendering) {
+  SimConfig c = sim_config("ipsc2", 16, Topology::Cube, Fidelity::Circuit);
+  c.algorithm = "compositing-study";
+  c.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/kurc/2pot.json";
+  c.width = c.height = 96;
+  c.overrides.memory_bytes = 64.0 * 1048576;
+  const auto r = run_simulation_isolated(c);
+  ASSERT_EQ(r["status"], "ok") << r.dump();
+  const auto names = compositing_contenders(16);
+  for (const char* want :
+       {"pair-rs", "aapc-hbp", "binary-swap", "direct-send", "radix-4", "radix-8"})
+    EXPECT_NE(std::find(names.begin(), names.end(), want), names.end()) << want;
+  for (const auto& name : names) {
+    double s = -1;
+    for (const auto& p : r["phases"])
+      if (p["name"] == name) s = p["max_s"].get<double>();
+    EXPECT_GT(s, 0) << name;
+    EXPECT_GT(r["compositing_study"][name]["max_messages"].get<double>(), 0) << name;
+  }
+  // One start-up a stage: binary swap's busiest node makes log2 16 = 4, direct send's 15.
+  EXPECT_EQ(r["compositing_study"]["binary-swap"]["max_messages"].get<double>(), 4);
+  EXPECT_EQ(r["compositing_study"]["direct-send"]["max_messages"].get<double>(), 15);
 }
