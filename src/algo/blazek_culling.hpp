@@ -9,6 +9,7 @@
 #include "algo/algorithm.hpp"
 #include "algo/blazek_mesh.hpp"
 #include "raster/renderer.hpp"
+#include "util/block_split.hpp"
 
 namespace zc::blazek {
 
@@ -23,14 +24,15 @@ bool object_may_touch(const NodeRenderer& nr, const Bytes& msg, const RowSet& ro
 std::vector<std::uint32_t> triangles_touching(NodeContext& ctx, const NodeRenderer& nr,
                                               const ProjectedMesh& pm, const RowSet& rows);
 
-// The strip methods' decomposition: node k of P owns rows [kH/P, (k+1)H/P) (some strips are empty
-// when P > H), and row y lies in strip ((y+1)P - 1) / H, the last strip starting at or before y
-// (yP/H is not: with H = 77 and P = 2, row 38 starts strip 1 but 38*2/77 = 0).
+// The strip methods' decomposition ("each strip is X/P pixels in height"): node k of P owns the
+// block of rows [kH/P, (k+1)H/P) (some strips are empty when P > H), and row y lies in the strip
+// whose block holds it (util/block_split.hpp).
 inline RowSet strip_rows(int k, int P, int H) {
-  return RowSet::band(int(std::int64_t(k) * H / P), int(std::int64_t(k + 1) * H / P));
+  const BlockRange b = block_range(std::size_t(H), P, k);
+  return RowSet::band(int(b.begin), int(b.end));
 }
 inline int strip_of_row(int y, int P, int H) {
-  return int(((std::int64_t(y) + 1) * P - 1) / H);
+  return block_of(std::size_t(H), P, std::size_t(y));
 }
 
 } // namespace zc::blazek

@@ -15,7 +15,7 @@ Mesh mesh_of(const std::vector<Poly>& polys) {
   m.tris.reserve(polys.size());
   for (const Poly& p : polys) {
     const auto at = std::uint32_t(m.vertices.size());
-    m.tris.push_back({p.id, p.material, {at, at + 1, at + 2}});
+    m.tris.push_back({p.id, {{at, at + 1, at + 2}, p.material}});
     m.vertices.insert(m.vertices.end(), p.v, p.v + 3);
   }
   return m;
@@ -25,9 +25,10 @@ std::vector<Poly> polys_of(const Mesh& m, const std::vector<std::uint32_t>& subs
   std::vector<Poly> out;
   out.reserve(subset.size());
   for (std::uint32_t t : subset) {
-    const Mesh::Tri& tr = m.tris[t];
+    const TriangleRecord& tr = m.tris[t];
+    const Triangle& t3 = tr.tri;
     out.push_back(
-        {tr.id, tr.material, {m.vertices[tr.v[0]], m.vertices[tr.v[1]], m.vertices[tr.v[2]]}});
+        {tr.id, t3.material, {m.vertices[t3.v[0]], m.vertices[t3.v[1]], m.vertices[t3.v[2]]}});
   }
   return out;
 }
@@ -51,8 +52,8 @@ Mesh object_mesh(NodeContext& ctx, const Bytes& msg) {
     const Triangle& tr = t.triangles[i];
     m.tris.push_back(
         {d.first_triangle + std::uint32_t(i),
-         tr.material,
-         {tr.v[0] - d.first_vertex, tr.v[1] - d.first_vertex, tr.v[2] - d.first_vertex}});
+         {{tr.v[0] - d.first_vertex, tr.v[1] - d.first_vertex, tr.v[2] - d.first_vertex},
+          tr.material}});
   }
   Counters c;
   c.triangles_tessellated = m.tris.size();
@@ -69,7 +70,7 @@ ProjectedMesh::ProjectedMesh(NodeContext& ctx, const NodeRenderer& nr, const Mes
 }
 
 bool ProjectedMesh::rows(const NodeRenderer& nr, std::uint32_t t, int& y0, int& y1) const {
-  const Mesh::Tri& tr = mesh.tris[t];
+  const Triangle& tr = mesh.tris[t].tri;
   const ProjectedVertex* pp[3] = {&pv[tr.v[0]], &pv[tr.v[1]], &pv[tr.v[2]]};
   return row_extent(pp, nr.width(), nr.height(), y0, y1);
 }

@@ -16,13 +16,10 @@ namespace zc::blazek {
 // records (host initiated packets, forwarded polygons) bring three vertices each, which the node
 // transforms one by one: the price of shipping polygons rather than descriptions.
 struct Mesh {
-  struct Tri {
-    std::uint32_t id, material, v[3]; // global id; indices into vertices
-  };
   std::vector<Vertex> vertices;
-  std::vector<Tri> tris;
+  std::vector<TriangleRecord> tris; // global ids; vertex numbers index `vertices`
   double bytes() const {
-    return double(vertices.size() * sizeof(Vertex) + tris.size() * sizeof(Tri));
+    return double(vertices.size() * sizeof(Vertex) + tris.size() * sizeof(TriangleRecord));
   }
 };
 Mesh mesh_of(const std::vector<Poly>& polys);

@@ -11,10 +11,9 @@ void render_mesh(NodeContext& ctx, const NodeRenderer& nr, const ProjectedMesh& 
   Counters c;
   TriangleBatch batch;
   auto draw = [&](std::uint32_t t) {
-    const Mesh::Tri& tr = pm.mesh.tris[t];
-    const ProjectedVertex* pp[3] = {&pm.pv[tr.v[0]], &pm.pv[tr.v[1]], &pm.pv[tr.v[2]]};
+    const TriangleRecord& tr = pm.mesh.tris[t];
     batch.clear();
-    nr.setup(tr.id, Triangle{{0, 1, 2}, tr.material}, pp, nullptr, batch, c);
+    nr.setup(tr.id, tr.tri, pm.pv.data(), nullptr, batch, c); // untextured (check_scene)
     draw_batch(batch, nr.shade(), fb, c);
   };
   if (subset)

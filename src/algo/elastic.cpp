@@ -42,14 +42,14 @@ std::vector<ProjectedVertex> project_vertices(NodeContext& ctx, const NodeRender
 // LocalLoad = Estimation(local triangles), §5: the rows each triangle covers, then the triangles
 // per row by a difference array and one scan.
 template <class Vertices>
-LocalLoad estimate_load(NodeContext& ctx, const NodeRenderer& nr, const std::vector<TriRec>& tris,
-                        const Vertices& pv) {
+LocalLoad estimate_load(NodeContext& ctx, const NodeRenderer& nr,
+                        const std::vector<TriangleRecord>& tris, const Vertices& pv) {
   auto ph = ctx.phase("load_estimation");
   const int H = nr.height();
   LocalLoad load;
   load.extents.resize(tris.size());
   for (std::size_t i = 0; i < tris.size(); ++i) {
-    const TriRec& t = tris[i];
+    const Triangle& t = tris[i].tri;
     const ProjectedVertex* p[3] = {&pv.at(t.v[0]), &pv.at(t.v[1]), &pv.at(t.v[2])};
     RowExtent& e = load.extents[i];
     if (!row_extent(p, nr.width(), H, e.y0, e.y1)) e = {1, 0}; // covers no row
@@ -103,11 +103,11 @@ multiscatter_triangles(NodeContext& ctx, const LocalScene& local,
     got.push_back(std::move(m.payload));
   std::vector<Record> slice;
   for (int s = 0; s < P; ++s) {
-    const std::size_t lo = block_lo(local.scene_triangles, P, s);
+    const BlockRange block = block_range(local.scene_triangles, P, s);
     std::size_t at = 0;
-    for (auto i : read_selection(got[s], block_lo(local.scene_triangles, P, s + 1) - lo, at)) {
-      const TriRec t =
-          read_triangle(got[s].data() + at, std::uint32_t(lo + i), with_material, material);
+    for (auto i : read_selection(got[s], block.size(), at)) {
+      const TriangleRecord t = read_triangle(got[s].data() + at, std::uint32_t(block.begin + i),
+                                             with_material, material);
       slice.push_back(Vertices::from_wire(t, got[s].data() + at + tri_bytes));
       at += record_bytes;
     }
@@ -124,21 +124,16 @@ Framebuffer zbuffer_slice(NodeContext& ctx, const NodeRenderer& nr, const LocalS
   auto ph = ctx.phase("zbuffer"); // the clear of the new buffer is the phase's (pixels_cleared)
   Framebuffer fb = nr.make_framebuffer(rows);
   ctx.alloc(double(fb.pixel_count() * records::charles::kZbufferLocation), "slice z-buffer");
-  const bool textured = ctx.scene().textured();
+  const glm::vec2* uvs = ctx.scene().textured() ? local.uvs.data() : nullptr;
   Counters w;
   w.pixels_cleared = fb.pixel_count();
   TriangleBatch batch;
   for (const auto& rec : slice) {
-    const TriRec& t = Vertices::triangle(rec);
+    const TriangleRecord& t = Vertices::triangle(rec);
     const ProjectedVertex* p[3];
     pv.vertices(rec, p);
-    const glm::vec2* uv[3] = {nullptr, nullptr, nullptr};
-    if (textured)
-      for (int k = 0; k < 3; ++k)
-        uv[k] = &local.uvs[t.v[k]];
     batch.clear();
-    const Triangle tri{{t.v[0], t.v[1], t.v[2]}, t.material};
-    nr.setup(t.id, tri, p, textured ? uv : nullptr, batch, w);
+    nr.setup_projected(t.id, t.tri, p, uvs, batch, w);
     draw_batch(batch, nr.shade(), fb, w);
   }
   ctx.charge(w);

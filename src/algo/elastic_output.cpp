@@ -6,6 +6,7 @@
 #include "comm/collectives.hpp"
 #include "comm/wire.hpp"
 #include "compositing/gather.hpp"
+#include "util/load_imbalance.hpp"
 
 namespace zc::elastic {
 
@@ -36,8 +37,7 @@ void record_slice_table(NodeContext& ctx, const std::vector<Bytes>& stats,
       {"duplicated_triangles", std::int64_t(sum_tris) - std::int64_t(scene_triangles)},
       {"vertices", ctx.options().get("vertices")},
       {"max_row_load", *std::max_element(global_load.begin(), global_load.end())}};
-  const auto [mn, mx] = std::minmax_element(loads.begin(), loads.end());
-  ctx.metrics()["load_imbalance"] = total ? double(*mx - *mn) / (double(total) / ctx.nodes()) : 0.0;
+  ctx.metrics()["load_imbalance"] = load_imbalance(loads);
 }
 
 } // namespace

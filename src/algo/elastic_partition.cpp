@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cstdlib>
 
+#include "util/block_split.hpp"
+
 namespace zc {
 
 std::vector<std::int64_t> load_differences(const std::vector<RowExtent>& extents, int height) {
@@ -32,7 +34,7 @@ std::vector<int> elastic_partition(const std::vector<std::int64_t>& load, int pa
   b[parts] = h;
   for (int k = 1; k < parts; ++k) {
     if (total == 0) {
-      b[k] = int(std::int64_t(h) * k / parts);
+      b[k] = int(block_begin(std::size_t(h), parts, k));
       continue;
     }
     // Boundary y minimising |cum[y]*parts - k*total| (exact integer arithmetic), y >= b[k-1].

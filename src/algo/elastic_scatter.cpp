@@ -11,20 +11,6 @@
 
 namespace zc::elastic {
 
-std::size_t block_lo(std::size_t n, int P, int k) {
-  return n * std::size_t(k) / std::size_t(P);
-}
-
-int block_owner(std::size_t n, int P, std::size_t i) {
-  // The k with block_lo(k) <= i < block_lo(k+1).
-  int k = int((i * std::size_t(P)) / std::max<std::size_t>(n, 1));
-  while (k + 1 < P && block_lo(n, P, k + 1) <= i)
-    ++k;
-  while (k > 0 && block_lo(n, P, k) > i)
-    --k;
-  return k;
-}
-
 namespace {
 
 std::vector<Vertex> scatter_vertices(NodeContext& ctx, const Scene& scene) {
@@ -33,9 +19,10 @@ std::vector<Vertex> scatter_vertices(NodeContext& ctx, const Scene& scene) {
   const std::size_t V = scene.vertices.size();
   std::vector<Bytes> parts;
   if (ctx.rank() == 0) {
-    for (int k = 0; k < P; ++k)
-      parts.push_back(pack(scene.vertices.data() + block_lo(V, P, k),
-                           block_lo(V, P, k + 1) - block_lo(V, P, k)));
+    for (int k = 0; k < P; ++k) {
+      const BlockRange b = block_range(V, P, k);
+      parts.push_back(pack(scene.vertices.data() + b.begin, b.size()));
+    }
     // Each block is a contiguous part of the vertex array: PPCM scatters it in place (zcube's copy
     // into a payload is an artefact of its wire format), so no packing is charged.
   }
@@ -44,7 +31,7 @@ std::vector<Vertex> scatter_vertices(NodeContext& ctx, const Scene& scene) {
   return mine;
 }
 
-std::vector<TriRec> scatter_triangles(NodeContext& ctx, const Scene& scene) {
+std::vector<TriangleRecord> scatter_triangles(NodeContext& ctx, const Scene& scene) {
   auto ph = ctx.phase("scatter_triangles");
   const int P = ctx.nodes();
   const std::size_t T = scene.triangles.size();
@@ -57,17 +44,17 @@ std::vector<TriRec> scatter_triangles(NodeContext& ctx, const Scene& scene) {
     // scattered in place: no packing charged (zcube builds the wire form from its own records).
     for (int k = 0; k < P; ++k) {
       Bytes block;
-      for (std::size_t i = block_lo(T, P, k); i < block_lo(T, P, k + 1); ++i) {
+      const BlockRange b = block_range(T, P, k);
+      for (std::size_t i = b.begin; i < b.end; ++i) {
         const Triangle& t = scene.triangles[i];
-        append_triangle(block, {std::uint32_t(i), {t.v[0], t.v[1], t.v[2]}, t.material},
-                        with_material);
+        append_triangle(block, {std::uint32_t(i), t}, with_material);
       }
       parts.push_back(std::move(block));
     }
   }
   const Bytes got = coll::scatterv(ctx.comm(), 0, std::move(parts));
-  const auto first = std::uint32_t(block_lo(T, P, ctx.rank()));
-  std::vector<TriRec> mine(got.size() / wire);
+  const auto first = std::uint32_t(block_begin(T, P, ctx.rank()));
+  std::vector<TriangleRecord> mine(got.size() / wire);
   for (std::size_t i = 0; i < mine.size(); ++i)
     mine[i] =
         read_triangle(got.data() + i * wire, first + std::uint32_t(i), with_material, material);
@@ -96,12 +83,12 @@ LocalScene scatter_scene(NodeContext& ctx) {
   LocalScene local;
   local.scene_vertices = scene.vertices.size();
   local.scene_triangles = scene.triangles.size();
-  local.first_vertex = block_lo(local.scene_vertices, P, r);
+  const BlockRange my_vertices = block_range(local.scene_vertices, P, r);
+  local.first_vertex = my_vertices.begin;
   local.vertices = scatter_vertices(ctx, scene);
   local.triangles = scatter_triangles(ctx, scene);
   if (scene.textured())
-    local.uvs = multibroadcast_uvs(ctx, scene, local.first_vertex,
-                                   block_lo(local.scene_vertices, P, r + 1));
+    local.uvs = multibroadcast_uvs(ctx, scene, my_vertices.begin, my_vertices.end);
   return local;
 }
 

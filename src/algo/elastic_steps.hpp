@@ -11,29 +11,18 @@
 #include "algo/algorithm.hpp"
 #include "algo/elastic_partition.hpp"
 #include "raster/renderer.hpp"
+#include "util/block_split.hpp"
 
 namespace zc::elastic {
 
-// A triangle as it travels: its global id (the depth tie-break), vertex indices and material.
-struct TriRec {
-  std::uint32_t id;
-  std::uint32_t v[3];
-  std::uint32_t material;
-};
-
-// Block k of n items over P nodes: [k*n/P, (k+1)*n/P).
-std::size_t block_lo(std::size_t n, int P, int k);
-// The node whose block holds item i.
-int block_owner(std::size_t n, int P, std::size_t i);
-
 // What a node holds for the whole animation once the scene is scattered.
 struct LocalScene {
-  std::size_t first_vertex = 0;    // global id of vertices[0]
-  std::size_t scene_vertices = 0;  // V, the scene's vertex count
-  std::size_t scene_triangles = 0; // T, the scene's triangle count
-  std::vector<Vertex> vertices;    // this node's block of vertices
-  std::vector<TriRec> triangles;   // this node's block of triangles
-  std::vector<glm::vec2> uvs;      // every texture coordinate (textured scenes only)
+  std::size_t first_vertex = 0;          // global id of vertices[0]
+  std::size_t scene_vertices = 0;        // V, the scene's vertex count
+  std::size_t scene_triangles = 0;       // T, the scene's triangle count
+  std::vector<Vertex> vertices;          // this node's block of vertices
+  std::vector<TriangleRecord> triangles; // this node's block of triangles
+  std::vector<glm::vec2> uvs;            // every texture coordinate (textured scenes only)
 };
 
 // Scatter(Vertices); Scatter(Triangles): equal contiguous blocks from node 0. Texture coordinates

@@ -31,12 +31,12 @@ std::vector<std::vector<std::uint32_t>> vertices_wanted(NodeContext& ctx, const 
   const int P = ctx.nodes();
   std::vector<std::uint32_t> ids;
   for (const auto& t : local.triangles)
-    ids.insert(ids.end(), t.v, t.v + 3);
+    ids.insert(ids.end(), t.tri.v, t.tri.v + 3);
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   std::vector<std::vector<std::uint32_t>> want(P);
   for (auto id : ids)
-    want[block_owner(local.scene_vertices, P, id)].push_back(id);
+    want[block_of(local.scene_vertices, P, id)].push_back(id);
   Counters w;
   w.rows_scanned = ids.size(); // building the request lists
   ctx.charge(w);

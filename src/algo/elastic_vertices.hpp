@@ -19,23 +19,23 @@ namespace zc::elastic {
 // §4 MultiBroadcast(Projected Vertices): every node receives all of them, so a triangle travels
 // as its bare record.
 struct BroadcastVertices {
-  using Record = TriRec;
+  using Record = TriangleRecord;
   std::vector<ProjectedVertex> all; // indexed by vertex id
   double bytes = 0;                 // held by the node (modelled memory)
 
   void exchange(NodeContext& ctx, const LocalScene& local,
                 const std::vector<ProjectedVertex>& mine);
   const ProjectedVertex& at(std::uint32_t id) const { return all[id]; }
-  Record record(const TriRec& t) const { return t; }
+  Record record(const TriangleRecord& t) const { return t; }
   // What a MultiScatter record carries besides the triangle's wire form: nothing (and what the
   // modelled machine is charged for it, records.hpp).
   static constexpr std::size_t kExtraWireBytes = 0, kExtraRecordBytes = 0;
-  void append_extra(Bytes&, const TriRec&) const {}
-  static Record from_wire(const TriRec& t, const std::uint8_t*) { return t; }
-  static const TriRec& triangle(const Record& r) { return r; }
+  void append_extra(Bytes&, const TriangleRecord&) const {}
+  static Record from_wire(const TriangleRecord& t, const std::uint8_t*) { return t; }
+  static const TriangleRecord& triangle(const Record& r) { return r; }
   void vertices(const Record& r, const ProjectedVertex* p[3]) const {
     for (int k = 0; k < 3; ++k)
-      p[k] = &all[r.v[k]];
+      p[k] = &all[r.tri.v[k]];
   }
 };
 
@@ -43,7 +43,7 @@ struct BroadcastVertices {
 // (request/answer), so a triangle crossing to another slice carries its projected vertices along.
 struct RequestedVertices {
   struct Record {
-    TriRec t;
+    TriangleRecord t;
     ProjectedVertex pv[3];
   };
   std::unordered_map<std::uint32_t, ProjectedVertex> known; // the needed ones
@@ -52,20 +52,22 @@ struct RequestedVertices {
   void exchange(NodeContext& ctx, const LocalScene& local,
                 const std::vector<ProjectedVertex>& mine);
   const ProjectedVertex& at(std::uint32_t id) const { return known.at(id); }
-  Record record(const TriRec& t) const { return {t, {at(t.v[0]), at(t.v[1]), at(t.v[2])}}; }
+  Record record(const TriangleRecord& t) const {
+    return {t, {at(t.tri.v[0]), at(t.tri.v[1]), at(t.tri.v[2])}};
+  }
   // A MultiScatter record carries the triangle's three projected vertices.
   static constexpr std::size_t kExtraWireBytes = 3 * sizeof(ProjectedVertex),
                                kExtraRecordBytes = 3 * records::charles::kProjectedVertex;
-  void append_extra(Bytes& b, const TriRec& t) const {
+  void append_extra(Bytes& b, const TriangleRecord& t) const {
     for (int k = 0; k < 3; ++k)
-      append(b, &at(t.v[k]), 1);
+      append(b, &at(t.tri.v[k]), 1);
   }
-  static Record from_wire(const TriRec& t, const std::uint8_t* extra) {
+  static Record from_wire(const TriangleRecord& t, const std::uint8_t* extra) {
     Record r{t, {}};
     std::memcpy(r.pv, extra, kExtraWireBytes);
     return r;
   }
-  static const TriRec& triangle(const Record& r) { return r.t; }
+  static const TriangleRecord& triangle(const Record& r) { return r.t; }
   static void vertices(const Record& r, const ProjectedVertex* p[3]) {
     for (int k = 0; k < 3; ++k)
       p[k] = &r.pv[k];

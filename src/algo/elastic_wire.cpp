@@ -15,16 +15,16 @@ std::size_t triangle_wire_bytes(const Scene& s) {
   return kTriangleWireBytes + (materials_travel(s) ? 4 : 0);
 }
 
-void append_triangle(Bytes& b, const TriRec& t, bool with_material) {
-  append(b, t.v, 3);
-  if (with_material) append(b, &t.material, 1);
+void append_triangle(Bytes& b, const TriangleRecord& t, bool with_material) {
+  append(b, t.tri.v, 3);
+  if (with_material) append(b, &t.tri.material, 1);
 }
 
-TriRec read_triangle(const std::uint8_t* p, std::uint32_t id, bool with_material,
-                     std::uint32_t material) {
-  TriRec t{id, {0, 0, 0}, material};
-  std::memcpy(t.v, p, kTriangleWireBytes);
-  if (with_material) std::memcpy(&t.material, p + kTriangleWireBytes, 4);
+TriangleRecord read_triangle(const std::uint8_t* p, std::uint32_t id, bool with_material,
+                             std::uint32_t material) {
+  TriangleRecord t{id, {{0, 0, 0}, material}};
+  std::memcpy(t.tri.v, p, kTriangleWireBytes);
+  if (with_material) std::memcpy(&t.tri.material, p + kTriangleWireBytes, 4);
   return t;
 }
 

@@ -22,10 +22,10 @@ bool materials_travel(const Scene& s);
 std::size_t triangle_wire_bytes(const Scene& s);
 
 // Appends triangle t's wire form (vertex numbers, then the material when `with_material`).
-void append_triangle(Bytes& b, const TriRec& t, bool with_material);
+void append_triangle(Bytes& b, const TriangleRecord& t, bool with_material);
 // Reads one back at p, as triangle `id` (of `material` when materials do not travel).
-TriRec read_triangle(const std::uint8_t* p, std::uint32_t id, bool with_material,
-                     std::uint32_t material);
+TriangleRecord read_triangle(const std::uint8_t* p, std::uint32_t id, bool with_material,
+                             std::uint32_t material);
 
 // A message carrying `picked` (ascending indices into a block of n triangles): the block's
 // bitmask; `append` then writes each picked triangle's record.

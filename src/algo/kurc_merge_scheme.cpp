@@ -17,10 +17,7 @@ void MergeScheme::local_zbuffer(NodeContext& ctx, const NodeRenderer& nr, const 
     picture_ = compositing::dense(full_zbuffer(ctx, nr, spans, w), kurc_pixel_records());
     return;
   }
-  // §2: the modified scanline z-buffer through the MSA (a C int a column) into the WPA.
-  ctx.alloc(double(nr.width()) * 4, "MSA");
-  ActivePixels wpa = zbuffer_spans(spans.lists, spans.batch, nr.shade(), nr.width(), w);
-  ctx.alloc(compositing::held_bytes(wpa, kurc_pixel_records()), "WPA");
+  ActivePixels wpa = scanline_zbuffer(ctx, nr, spans, w);
   row_pixels_.resize(std::size_t(height_));
   for (int y = 0; y < height_; ++y)
     row_pixels_[std::size_t(y)] = std::int32_t(wpa.row_count(y));

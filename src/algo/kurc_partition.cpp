@@ -21,12 +21,4 @@ std::vector<std::uint64_t> node_loads(const std::vector<std::uint64_t>& row_pixe
   return l;
 }
 
-double load_imbalance(const std::vector<std::uint64_t>& loads) {
-  if (loads.empty()) return 0;
-  const auto [mn, mx] = std::minmax_element(loads.begin(), loads.end());
-  const double avg =
-      double(std::accumulate(loads.begin(), loads.end(), std::uint64_t(0))) / double(loads.size());
-  return avg > 0 ? double(*mx - *mn) / avg : 0.0;
-}
-
 } // namespace zc

@@ -32,7 +32,4 @@ extern const ScreenPartition kRecursiveSubdivision, kHeuristicBinPacking, kEvenS
 std::vector<std::uint64_t> node_loads(const std::vector<std::uint64_t>& row_pixels,
                                       const std::vector<int>& owner, int nodes);
 
-// Load imbalance as Kurc et al. define it for Fig. 2: (max - min) / average.
-double load_imbalance(const std::vector<std::uint64_t>& loads);
-
 } // namespace zc

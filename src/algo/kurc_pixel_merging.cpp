@@ -15,6 +15,7 @@
 #include "compositing/gather.hpp"
 #include "compositing/winning_pixels.hpp"
 #include "util/error.hpp"
+#include "util/load_imbalance.hpp"
 
 namespace zc {
 

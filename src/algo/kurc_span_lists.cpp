@@ -4,11 +4,30 @@
 
 #include <unordered_map>
 
+#include "algo/composite.hpp"
 #include "algo/records.hpp"
 #include "comm/collectives.hpp"
 #include "comm/wire.hpp"
+#include "compositing/winning_pixels.hpp"
 
 namespace zc::kurc {
+
+namespace {
+// Scene triangle i as a node holds it: its world polygon, vertex ids and (textured) coordinates.
+void add_triangle(NodeTriangles& to, const Scene& scene, std::size_t i) {
+  const Triangle& t = scene.triangles[i];
+  to.tris.push_back({world_polygon(scene, std::uint32_t(i)), {t.v[0], t.v[1], t.v[2]}});
+  if (scene.textured())
+    to.uvs.push_back({{scene.uvs[t.v[0]], scene.uvs[t.v[1]], scene.uvs[t.v[2]]}});
+}
+} // namespace
+
+NodeTriangles all_triangles(const Scene& scene) {
+  NodeTriangles all;
+  for (std::size_t i = 0; i < scene.triangles.size(); ++i)
+    add_triangle(all, scene, i);
+  return all;
+}
 
 NodeTriangles distribute_triangles(NodeContext& ctx) {
   auto ph = ctx.phase("distribute");
@@ -18,18 +37,13 @@ NodeTriangles distribute_triangles(NodeContext& ctx) {
   std::vector<Message> parts(P);
   std::vector<Bytes> uv_parts(P);
   if (ctx.rank() == 0) {
-    std::vector<std::vector<TriWorld>> per(P);
-    std::vector<std::vector<TriUV>> per_uv(P);
-    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
-      const Triangle& t = scene.triangles[i];
-      per[i % P].push_back({world_polygon(scene, std::uint32_t(i)), {t.v[0], t.v[1], t.v[2]}});
-      if (textured)
-        per_uv[i % P].push_back({{scene.uvs[t.v[0]], scene.uvs[t.v[1]], scene.uvs[t.v[2]]}});
-    }
+    std::vector<NodeTriangles> per(P);
+    for (std::size_t i = 0; i < scene.triangles.size(); ++i)
+      add_triangle(per[i % P], scene, i);
     // Each polygon is charged as the paper's record (records.hpp), not zcube's TriWorld.
     for (int k = 0; k < P; ++k) {
-      parts[k] = {pack(per[k]), per[k].size() * records::kurc::kPolygon};
-      if (textured) uv_parts[k] = pack(per_uv[k]);
+      parts[k] = {pack(per[k].tris), per[k].tris.size() * records::kurc::kPolygon};
+      if (textured) uv_parts[k] = pack(per[k].uvs);
     }
     ctx.charge_packing(scene.triangles.size() * records::kurc::kPolygon);
   }
@@ -56,12 +70,9 @@ NodeSpans create_span_lists(NodeContext& ctx, const NodeRenderer& nr, const Node
   for (std::size_t i = 0; i < mine.tris.size(); ++i) {
     const TriWorld& t = mine.tris[i];
     const ProjectedVertex* p[3] = {&pv[t.vid[0]], &pv[t.vid[1]], &pv[t.vid[2]]};
-    const glm::vec2* uv[3] = {nullptr, nullptr, nullptr};
-    if (textured)
-      for (int k = 0; k < 3; ++k)
-        uv[k] = &mine.uvs[i].uv[k];
-    nr.setup(t.poly.id, Triangle{{t.vid[0], t.vid[1], t.vid[2]}, t.poly.material}, p,
-             textured ? uv : nullptr, s.batch, w);
+    // The triangle's own three texture coordinates travelled with it (TriUV): vertices 0, 1, 2.
+    nr.setup_projected(t.poly.id, Triangle{{0, 1, 2}, t.poly.material}, p,
+                       textured ? mine.uvs[i].uv : nullptr, s.batch, w);
   }
   ctx.alloc(double(s.batch.tris.size() * sizeof(ScreenTriangle)), "set-up records");
   ctx.release(projected);
@@ -69,6 +80,14 @@ NodeSpans create_span_lists(NodeContext& ctx, const NodeRenderer& nr, const Node
   ctx.charge(w);
   ctx.alloc(double(s.lists.bytes()), "span lists");
   return s;
+}
+
+ActivePixels scanline_zbuffer(NodeContext& ctx, const NodeRenderer& nr, const NodeSpans& spans,
+                              Counters& w) {
+  ctx.alloc(double(nr.width()) * 4, "MSA");
+  ActivePixels wpa = zbuffer_spans(spans.lists, spans.batch, nr.shade(), nr.width(), w);
+  ctx.alloc(compositing::held_bytes(wpa, kurc_pixel_records()), "WPA");
+  return wpa;
 }
 
 } // namespace zc::kurc

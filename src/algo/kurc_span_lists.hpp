@@ -33,6 +33,8 @@ struct NodeTriangles {
 
 // Distribute: node 0 reads the scene and deals the triangles with their world vertices.
 NodeTriangles distribute_triangles(NodeContext& ctx);
+// Every triangle of the scene as one node holds it (the one-node reference: no distribute).
+NodeTriangles all_triangles(const Scene& scene);
 
 // The span lists of a node's triangles and the screen triangles they index.
 struct NodeSpans {
@@ -45,5 +47,11 @@ struct NodeSpans {
 
 // Span list creation (§2, first step).
 NodeSpans create_span_lists(NodeContext& ctx, const NodeRenderer& nr, const NodeTriangles& mine);
+
+// The modified scanline z-buffer (§2, second step): the spans through the MSA (a scanline of
+// depths, a C int a column) into the Winning Pixel Array, both held in node memory (the WPA as
+// the paper's records: a WPA entry a pixel, a count a scanline); work into w.
+ActivePixels scanline_zbuffer(NodeContext& ctx, const NodeRenderer& nr, const NodeSpans& spans,
+                              Counters& w);
 
 } // namespace zc::kurc

@@ -4,8 +4,8 @@
 #include "algo/compositing_study.hpp"
 #include "algo/elastic.hpp"
 #include "algo/kurc_pixel_merging.hpp"
+#include "algo/kurc_scanline.hpp"
 #include "algo/pingpong.hpp"
-#include "algo/scanline_baseline.hpp"
 #include "algo/sequential.hpp"
 #include "algo/sort_last.hpp"
 #include "util/error.hpp"
@@ -15,7 +15,7 @@ namespace zc {
 const std::vector<Algorithm>& algorithms() {
   static const std::vector<Algorithm> all = [] {
     std::vector<Algorithm> v = {sequential_algorithm(), elastic_algorithm(), pingpong_algorithm(),
-                                comm_check_algorithm(), scanline_baseline_algorithm()};
+                                comm_check_algorithm(), kurc_scanline_algorithm()};
     for (auto& a : kurc_algorithms())
       v.push_back(a);
     for (auto& a : blazek_algorithms())

@@ -39,17 +39,10 @@ void sequential_node(NodeContext& ctx) {
       auto ph = ctx.phase("zbuffer");
       Counters c;
       c.pixels_cleared = std::uint64_t(base.width) * base.height;
-      const bool textured = base.textured();
       TriangleBatch batch;
       for (std::size_t i = 0; i < base.triangles.size(); ++i) {
-        const Triangle& t = base.triangles[i];
-        const ProjectedVertex* p[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
-        const glm::vec2* uv[3] = {nullptr, nullptr, nullptr};
-        if (textured)
-          for (int k = 0; k < 3; ++k)
-            uv[k] = &base.uvs[t.v[k]];
         batch.clear();
-        nr.setup(std::uint32_t(i), t, p, textured ? uv : nullptr, batch, c);
+        nr.setup(std::uint32_t(i), base.triangles[i], pv.data(), base.uvs_if_textured(), batch, c);
         draw_batch(batch, nr.shade(), fb, c);
       }
       c.pixels_final = fb.covered();

@@ -13,7 +13,9 @@
 #include "compositing/gather.hpp"
 #include "compositing/run_length.hpp"
 #include "compositing/winning_pixels.hpp"
+#include "util/block_split.hpp"
 #include "util/error.hpp"
+#include "util/load_imbalance.hpp"
 
 namespace zc {
 
@@ -59,7 +61,7 @@ std::vector<int> region(NodeContext& ctx, const LocalPicture& p, int owners, int
   if (p.row_pixels.empty()) {
     std::vector<int> owner(std::size_t(height), 0);
     for (int y = 0; y < height; ++y)
-      owner[std::size_t(y)] = int(std::int64_t(y) * owners / height);
+      owner[std::size_t(y)] = block_of(std::size_t(height), owners, std::size_t(y));
     return owner;
   }
   const auto global = coll::allreduce(ctx.comm(), p.row_pixels, coll::Op::Sum);

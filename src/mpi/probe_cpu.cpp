@@ -111,9 +111,7 @@ void render_loops(Fit& f, const std::string& path, int size) {
             },
             f.min_s));
   auto setup = [&](std::size_t i, TriangleBatch& batch, Counters& c) {
-    const Triangle& t = s.triangles[i];
-    const ProjectedVertex* p3[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
-    nr.setup(std::uint32_t(i), t, p3, nullptr, batch, c);
+    nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, batch, c);
   };
   TriangleBatch one;
   f.add("set-up " + name, ct,

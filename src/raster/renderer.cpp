@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "raster/zbuffer.hpp"
+#include "util/block_split.hpp"
 
 namespace zc {
 
@@ -15,12 +16,13 @@ NodeRenderer::NodeRenderer(const Scene& scene, const Camera& camera)
     : view_(make_view(scene, camera)), shade_(ShadeContext::of(scene)),
       background_(scene.background), cull_back_(scene.cull == CullMode::Back) {}
 
-void NodeRenderer::setup(std::uint32_t id, const Triangle& tri, const ProjectedVertex* const pv[3],
-                         const glm::vec2* const uv[3], TriangleBatch& out, Counters& c) const {
-  SetupInput in{{pv[0], pv[1], pv[2]}, {nullptr, nullptr, nullptr}, id, tri.material};
-  if (shade_.textures && uv && (*shade_.materials)[tri.material].texture >= 0)
+void NodeRenderer::setup_projected(std::uint32_t id, const Triangle& tri,
+                                   const ProjectedVertex* const p[3], const glm::vec2* uvs,
+                                   TriangleBatch& out, Counters& c) const {
+  SetupInput in{{p[0], p[1], p[2]}, {nullptr, nullptr, nullptr}, id, tri.material};
+  if (shade_.textures && uvs && (*shade_.materials)[tri.material].texture >= 0)
     for (int k = 0; k < 3; ++k)
-      in.uv[k] = uv[k];
+      in.uv[k] = &uvs[tri.v[k]];
   setup_triangle(in, view_.width, view_.height, cull_back_, out, c);
 }
 
@@ -104,14 +106,14 @@ Counters render_into(const Scene& scene, int threads, Framebuffer& image, Render
   std::vector<ProjectedVertex>& pv = scratch.pv;
   pv.resize(scene.vertices.size());
   run_workers(threads, [&](int w) {
-    const std::size_t n = pv.size(), lo = n * w / threads, hi = n * (w + 1) / threads;
-    for (std::size_t i = lo; i < hi; ++i)
+    const BlockRange mine = block_range(pv.size(), threads, w);
+    for (std::size_t i = mine.begin; i < mine.end; ++i)
       pv[i] = nr.project(scene.vertices[i], tc[w]);
   });
 
   // 2. Triangles in chunks: set-up split by triangle ranges, each worker's triangles binned by
   // band, rasterisation split by row bands.
-  const bool textured = scene.textured();
+  const glm::vec2* uvs = scene.uvs_if_textured();
   const int band_h =
       threads == 1 ? std::max(1, scene.height) : std::max(4, scene.height / (threads * 8));
   const int bands = (scene.height + band_h - 1) / band_h;
@@ -124,16 +126,9 @@ Counters render_into(const Scene& scene, int threads, Framebuffer& image, Render
     run_workers(threads, [&](int w) {
       TriangleBatch& b = batches[w];
       b.clear();
-      const std::size_t n = c1 - c0, lo = c0 + n * w / threads, hi = c0 + n * (w + 1) / threads;
-      for (std::size_t i = lo; i < hi; ++i) {
-        const Triangle& t = scene.triangles[i];
-        const ProjectedVertex* p[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
-        const glm::vec2* uv[3] = {nullptr, nullptr, nullptr};
-        if (textured)
-          for (int k = 0; k < 3; ++k)
-            uv[k] = &scene.uvs[t.v[k]];
-        nr.setup(std::uint32_t(i), t, p, textured ? uv : nullptr, b, tc[w]);
-      }
+      const BlockRange mine = block_range(c1 - c0, threads, w);
+      for (std::size_t i = c0 + mine.begin; i < c0 + mine.end; ++i)
+        nr.setup(std::uint32_t(i), scene.triangles[i], pv.data(), uvs, b, tc[w]);
       if (bands > 1) scratch.bins[w].fill(b, band_h, bands);
     });
     std::atomic<int> next{0};

@@ -32,10 +32,17 @@ public:
     return view_.project(v);
   }
 
-  // Sets up triangle `id` (its record `tri`) with projected vertices pv[0..2] and, when the scene
-  // is textured, texture coordinates uv[0..2].
-  void setup(std::uint32_t id, const Triangle& tri, const ProjectedVertex* const pv[3],
-             const glm::vec2* const uv[3], TriangleBatch& out, Counters& c) const;
+  // Sets up triangle `id` (its record `tri`): its projected vertices are pv[tri.v[k]] and, looked
+  // up only when its material is textured, its texture coordinates uvs[tri.v[k]] (uvs: the scene's
+  // texture coordinates or a copy indexed the same way; nullptr for an untextured scene).
+  void setup(std::uint32_t id, const Triangle& tri, const ProjectedVertex* pv, const glm::vec2* uvs,
+             TriangleBatch& out, Counters& c) const {
+    const ProjectedVertex* const p[3] = {&pv[tri.v[0]], &pv[tri.v[1]], &pv[tri.v[2]]};
+    setup_projected(id, tri, p, uvs, out, c);
+  }
+  // The same when the caller has looked up the projected vertices, p[0..2].
+  void setup_projected(std::uint32_t id, const Triangle& tri, const ProjectedVertex* const p[3],
+                       const glm::vec2* uvs, TriangleBatch& out, Counters& c) const;
 
   Framebuffer make_framebuffer(const RowSet& rows) const {
     return Framebuffer(view_.width, rows, background_);

@@ -8,6 +8,7 @@
 #include "geometry/camera_path.hpp"
 #include "raster/image_io.hpp"
 #include "raster/renderer.hpp"
+#include "util/load_imbalance.hpp"
 
 namespace zc {
 
@@ -167,15 +168,12 @@ void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, 
   //  load_imbalance: (max - min) / mean of the nodes' busy (CPU) time, the definition the
   //    algorithms use for their own loads; 0 when nobody worked.
   std::uint64_t max_sent = 0;
-  double busy_max = 0, busy_min = P > 0 ? nodes[0].stats.busy_s : 0.0, busy_sum = 0;
+  std::vector<double> busy;
   for (int r = 0; r < P; ++r) {
     const NodeStats& s = nodes[std::size_t(r)].stats;
     max_sent = std::max(max_sent, s.bytes_sent);
-    busy_max = std::max(busy_max, s.busy_s);
-    busy_min = std::min(busy_min, s.busy_s);
-    busy_sum += s.busy_s;
+    busy.push_back(s.busy_s);
   }
-  const double busy_mean = P > 0 ? busy_sum / P : 0.0;
   // The paper's timed region (docs/papers.md): the longest (end - start) over the nodes that
   // started one, the end being the node's finish unless it marked one; absent when no node
   // started one (the whole run is timed).
@@ -191,7 +189,7 @@ void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, 
                         {"payload_bytes", payload},
                         {"concurrent_volume_bytes", max_sent}};
   j["counters"] = total;
-  j["load_imbalance"] = busy_mean > 0 ? (busy_max - busy_min) / busy_mean : 0.0;
+  j["load_imbalance"] = load_imbalance(busy);
   std::vector<const EventLog*> logs;
   std::vector<nlohmann::json> ranks;
   for (const NodeRecord& rec : nodes) {

@@ -44,6 +44,14 @@ struct Triangle {
   std::uint32_t material = 0;     // index into Scene::materials
 };
 
+// A triangle as a node holds it: its global id (its index in Scene::triangles, the depth tie-break
+// that keeps every algorithm's picture the sequential renderer's) and its record, whose vertex
+// numbers index the scene's vertices or the node's own (a tessellated object's).
+struct TriangleRecord {
+  std::uint32_t id = 0;
+  Triangle tri;
+};
+
 // A primitive as a scene description states it (Blazek ch. IV): kept so that methods which ship
 // descriptions instead of polygons (node initiated, object forwarding) can re-tessellate it on a
 // node. Tessellating `desc` yields exactly triangles [first_triangle,
@@ -77,6 +85,8 @@ struct Scene {
   std::vector<ObjectDesc> objects;
 
   bool textured() const { return !textures.empty() && !uvs.empty(); }
+  // The texture coordinates set-up reads (NodeRenderer::setup), nullptr when untextured.
+  const glm::vec2* uvs_if_textured() const { return textured() ? uvs.data() : nullptr; }
 };
 
 // The bounding box of the scene's vertices.

@@ -6,6 +6,7 @@
 
 #include "algo/elastic_partition.hpp"
 #include "algo/kurc_partition.hpp"
+#include "util/load_imbalance.hpp"
 
 using namespace zc;
 
@@ -92,5 +93,5 @@ TEST(MergePartition, BinPackingBalancesBetterThanRecursiveSubdivision) {
       const double hbp = load_imbalance(node_loads(rows, heuristic_bin_packing(rows, p), p));
       EXPECT_LE(hbp, rs) << "P=" << p;
     }
-  EXPECT_DOUBLE_EQ(load_imbalance({5, 10, 15}), 1.0);
+  EXPECT_DOUBLE_EQ(load_imbalance(std::vector<std::uint64_t>{5, 10, 15}), 1.0);
 }

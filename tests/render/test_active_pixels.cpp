@@ -40,9 +40,7 @@ TriangleBatch setup_range(const Scene& s, const NodeRenderer& nr, std::size_t lo
     pv.push_back(nr.project(v, c));
   TriangleBatch b;
   for (std::size_t i = lo; i < hi; i += step) {
-    const auto& t = s.triangles[i];
-    const ProjectedVertex* p[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
-    nr.setup(std::uint32_t(i), t, p, nullptr, b, c);
+    nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, b, c);
   }
   return b;
 }

@@ -260,9 +260,7 @@ TEST(Raster, RowSubsetsReproduceTheFullImage) {
     pv.push_back(nr.project(v, c));
   TriangleBatch b;
   for (std::size_t i = 0; i < s.triangles.size(); ++i) {
-    const auto& t = s.triangles[i];
-    const ProjectedVertex* p[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
-    nr.setup(std::uint32_t(i), t, p, nullptr, b, c);
+    nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, b, c);
   }
   for (RowSet rs : {RowSet::band(0, 23), RowSet::band(23, 70), RowSet::interleaved(1, 3, 70),
                     RowSet::interleaved(0, 3, 70), RowSet::interleaved(2, 3, 70)}) {

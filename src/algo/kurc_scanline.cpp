@@ -2,8 +2,9 @@
 // are the parallel schemes' first two Table 2 columns, with the same operations per polygon as a
 // node of the schemes has for its share: each polygon with its three world vertices, a shared
 // vertex transformed once, spans into x_min-sorted scanline lists, the modified scanline z-buffer.
-#include "algo/scanline_baseline.hpp"
+#include "algo/kurc_scanline.hpp"
 
+#include "algo/kurc_span_lists.hpp"
 #include "algo/records.hpp"
 #include "raster/active_pixels.hpp"
 #include "raster/renderer.hpp"
@@ -13,49 +14,24 @@ namespace zc {
 
 namespace {
 
-// A polygon as the node holds it: the schemes' dealt record (records.hpp).
-constexpr double kPolygonBytes = records::kurc::kPolygon;
-
 void scanline_node(NodeContext& ctx) {
   if (ctx.rank() != 0) return;
   const Scene& scene = ctx.scene();
   if (scene.textured()) throw UsageError("the scanline baseline renders untextured scenes");
-  const int W = scene.width, H = scene.height;
+  const int H = scene.height;
   const NodeRenderer nr(scene);
-  ctx.alloc(kPolygonBytes * double(scene.triangles.size()), "polygons");
-  TriangleBatch batch;
-  SpanLists lists;
+  // The polygons as a node of the schemes holds its share: the dealt record (records.hpp).
+  ctx.alloc(double(records::kurc::kPolygon) * double(scene.triangles.size()), "polygons");
+  const kurc::NodeTriangles mine = kurc::all_triangles(scene);
   // The timed region: the schemes' first two Table 2 columns (docs/papers.md), the polygons
   // being already local.
   ctx.start_timed_region();
-  {
-    auto ph = ctx.phase("span_list_creation");
-    Counters w;
-    // The projected vertices (28 bytes each) are held until every triangle is set up.
-    std::vector<ProjectedVertex> pv(scene.vertices.size());
-    ctx.alloc(double(pv.size() * sizeof(ProjectedVertex)), "projected vertices");
-    for (std::size_t i = 0; i < pv.size(); ++i)
-      pv[i] = nr.project(scene.vertices[i], w);
-    for (std::size_t i = 0; i < scene.triangles.size(); ++i) {
-      const Triangle& t = scene.triangles[i];
-      const ProjectedVertex* p[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
-      nr.setup(std::uint32_t(i), t, p, nullptr, batch, w);
-    }
-    ctx.alloc(double(batch.tris.size() * sizeof(ScreenTriangle)), "set-up records");
-    ctx.release(double(pv.size() * sizeof(ProjectedVertex)));
-    lists = build_span_lists(batch, W, H, w);
-    ctx.charge(w);
-    ctx.alloc(double(lists.bytes()), "span lists");
-  }
+  const kurc::NodeSpans spans = kurc::create_span_lists(ctx, nr, mine);
   ActivePixels wpa;
   {
     auto ph = ctx.phase("local_zbuffer");
     Counters w;
-    ctx.alloc(double(W) * 4, "MSA");
-    wpa = zbuffer_spans(lists, batch, nr.shade(), W, w);
-    ctx.alloc(double(wpa.count() * records::kurc::kWinningPixel +
-                     wpa.row_begin.size() * records::kurc::kCountEntry),
-              "WPA");
+    wpa = kurc::scanline_zbuffer(ctx, nr, spans, w);
     ctx.charge(w);
   }
   ctx.end_timed_region();
@@ -68,7 +44,7 @@ void scanline_node(NodeContext& ctx) {
 
 } // namespace
 
-Algorithm scanline_baseline_algorithm() {
+Algorithm kurc_scanline_algorithm() {
   Algorithm a;
   a.name = "scanline";
   a.summary = "Kurc et al.'s one-node reference: modified scanline z-buffer, no frame buffer";
