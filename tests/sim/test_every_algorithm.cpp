@@ -22,7 +22,8 @@ SimConfig four_nodes(const std::string& algorithm) {
   c.height = 20; // not a multiple of 4: partial strips and bands
   c.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/blazek/spheres_16.json";
   c.overrides.memory_bytes = 64.0 * 1024 * 1024;
-  c.compare_with_sequential = algorithm != "comm-check" && algorithm != "pingpong";
+  // Every algorithm that draws a picture (not comm-check, pingpong, compositing-study).
+  c.compare_with_sequential = algorithm != "comm-check" && find_algorithm(algorithm).draws_picture;
 #ifdef ZCUBE_SANITIZED
   c.simgrid_args = {"--cfg=contexts/factory:thread"};
 #endif
