@@ -21,10 +21,9 @@ void hierarchical_merge(NodeContext& ctx, Framebuffer fb) {
   rec.location = records::blazek::kFrameBufferPixel;
   const int height = fb.rows().end;
   auto picture = compositing::dense(std::move(fb), rec);
-  ContextMemory memory(ctx);
   Counters w;
-  compositing::Node node{ctx.comm(), memory, w, [&](const Counters& k) { ctx.charge(k); }};
-  compositing::tree().composite(node, *picture, std::vector<int>(std::size_t(height), 0));
+  composite(ctx, compositing::tree(), *picture, std::vector<int>(std::size_t(height), 0), w,
+            MergeCharge::ByRound);
   if (ctx.rank() == 0) ctx.deliver_image(0, std::move(compositing::framebuffer(*picture)));
 }
 

@@ -19,13 +19,21 @@ private:
   NodeContext& ctx_;
 };
 
+// How a program charges the merge work of a multi-round strategy.
+enum class MergeCharge {
+  AtPhaseEnd, // counted into w, charged by the caller when its phase ends (Kurc et al.'s programs,
+              // as the calibration fitted them: a node's merge does not delay its next send)
+  ByRound     // charged after each round's merge, before the node sends the merged rows on
+};
+
 // Composites p over every node of the machine by strategy s into the region owner; work counted
-// into w (charged by the caller when its phase ends).
+// into w (what is left of it charged by the caller when its phase ends).
 inline compositing::Measures composite(NodeContext& ctx, const compositing::Strategy& s,
                                        compositing::Picture& p, const std::vector<int>& owner,
-                                       Counters& w) {
+                                       Counters& w, MergeCharge how = MergeCharge::AtPhaseEnd) {
   ContextMemory memory(ctx);
   compositing::Node node{ctx.comm(), memory, w};
+  if (how == MergeCharge::ByRound) node.charge_round = [&ctx](const Counters& k) { ctx.charge(k); };
   return s.composite(node, p, owner);
 }
 

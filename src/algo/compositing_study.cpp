@@ -77,7 +77,7 @@ compositing::Measures run(NodeContext& ctx, const Contender& c, const ActivePixe
   const auto rec = kurc_pixel_records();
   auto picture =
       c.run_length ? compositing::run_length(local, rec) : compositing::winning_pixels(local, rec);
-  auto m = composite(ctx, c.strategy, *picture, owner, w);
+  auto m = composite(ctx, c.strategy, *picture, owner, w, MergeCharge::ByRound);
   ctx.charge(w);
   return m;
 }

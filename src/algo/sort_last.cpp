@@ -129,7 +129,7 @@ void sort_last_node(NodeContext& ctx, const compositing::Strategy& s) {
     auto ph = ctx.phase("pixel_merging");
     Counters w;
     const auto owner = region(ctx, lp, s.owners(ctx.nodes()), nr.height(), w);
-    m = composite(ctx, s, *lp.picture, owner, w);
+    m = composite(ctx, s, *lp.picture, owner, w, MergeCharge::ByRound);
     ctx.charge(w);
   }
   ctx.end_timed_region();

@@ -152,7 +152,10 @@ std::string readme(const Written& w, bool full) {
          "composite IceT's run-length encoded pixels shared by heuristic bin packing. radix-k "
          "with k = 2 is binary swap and with k = P direct send (tests/compositing). All-to-all "
          "rounds of more than 64 nodes (16 above 256 nodes) are not simulated (host time). Node "
-         "memory is not the limit here (1 GiB nodes): the study is about time.\n\n" +
+         "memory is not the limit here (1 GiB nodes): the study is about time. Each round's merge "
+         "is "
+         "charged before the node sends on (docs/compositing.md, \"Limits\"; Kurc et al.'s own "
+         "programs charge it when the phase ends, as calibrated).\n\n" +
          w.md.markdown() + "\n## The best k at the largest node count, and why (400x400)\n\n" +
          summary(w) +
          "\n`best k` is the fastest radix-k (binary swap k = 2, direct send k = P). `best.csv` "
