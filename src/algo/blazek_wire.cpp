@@ -2,10 +2,9 @@
 // buffer record (blazek_wire.hpp).
 #include "algo/blazek_wire.hpp"
 
-#include <cstring>
-
 #include "algo/records.hpp"
 #include "comm/wire.hpp"
+#include "util/record_io.hpp"
 
 namespace zc::blazek {
 
@@ -37,10 +36,11 @@ Message encode_object(const Scene& s, std::size_t o) {
 
 std::optional<ObjectMessage> decode_object(const Bytes& msg) {
   if (msg.size() < sizeof(ObjectHeader)) return std::nullopt;
+  RecordReader in(msg, "object description");
   ObjectMessage m;
-  std::memcpy(&m.header, msg.data(), sizeof m.header);
-  m.rest = msg.data() + sizeof m.header;
-  m.rest_size = msg.size() - sizeof m.header;
+  m.header = in.get<ObjectHeader>();
+  m.rest_size = in.remaining();
+  m.rest = in.get_bytes(m.rest_size);
   return m;
 }
 

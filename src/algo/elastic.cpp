@@ -78,7 +78,6 @@ multiscatter_triangles(NodeContext& ctx, const LocalScene& local,
   const std::uint32_t material =
       ctx.scene().triangles.empty() ? 0 : ctx.scene().triangles.front().material;
   const std::size_t tri_bytes = kTriangleWireBytes + (with_material ? 4 : 0);
-  const std::size_t record_bytes = tri_bytes + Vertices::kExtraWireBytes;
   const auto& tris = local.triangles;
   std::vector<std::vector<std::uint32_t>> picked(P);
   for (std::size_t i = 0; i < tris.size(); ++i)
@@ -104,12 +103,11 @@ multiscatter_triangles(NodeContext& ctx, const LocalScene& local,
   std::vector<Record> slice;
   for (int s = 0; s < P; ++s) {
     const BlockRange block = block_range(local.scene_triangles, P, s);
-    std::size_t at = 0;
-    for (auto i : read_selection(got[s], block.size(), at)) {
-      const TriangleRecord t = read_triangle(got[s].data() + at, std::uint32_t(block.begin + i),
-                                             with_material, material);
-      slice.push_back(Vertices::from_wire(t, got[s].data() + at + tri_bytes));
-      at += record_bytes;
+    RecordReader in(got[s], "multiscatter");
+    for (auto i : read_selection(in, block.size())) {
+      const TriangleRecord t =
+          read_triangle(in, std::uint32_t(block.begin + i), with_material, material);
+      slice.push_back(Vertices::from_wire(t, in.get_bytes(Vertices::kExtraWireBytes)));
     }
   }
   ctx.alloc(double(slice.size() * charged_record), "slice triangles");

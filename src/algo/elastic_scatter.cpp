@@ -55,9 +55,9 @@ std::vector<TriangleRecord> scatter_triangles(NodeContext& ctx, const Scene& sce
   const Bytes got = coll::scatterv(ctx.comm(), 0, std::move(parts));
   const auto first = std::uint32_t(block_begin(T, P, ctx.rank()));
   std::vector<TriangleRecord> mine(got.size() / wire);
+  RecordReader in(got, "triangle block");
   for (std::size_t i = 0; i < mine.size(); ++i)
-    mine[i] =
-        read_triangle(got.data() + i * wire, first + std::uint32_t(i), with_material, material);
+    mine[i] = read_triangle(in, first + std::uint32_t(i), with_material, material);
   ctx.alloc(double(got.size()), "triangle block");
   return mine;
 }

@@ -20,11 +20,11 @@ void append_triangle(Bytes& b, const TriangleRecord& t, bool with_material) {
   if (with_material) append(b, &t.tri.material, 1);
 }
 
-TriangleRecord read_triangle(const std::uint8_t* p, std::uint32_t id, bool with_material,
+TriangleRecord read_triangle(RecordReader& in, std::uint32_t id, bool with_material,
                              std::uint32_t material) {
   TriangleRecord t{id, {{0, 0, 0}, material}};
-  std::memcpy(t.tri.v, p, kTriangleWireBytes);
-  if (with_material) std::memcpy(&t.tri.material, p + kTriangleWireBytes, 4);
+  in.get(t.tri.v, 3);
+  if (with_material) t.tri.material = in.get<std::uint32_t>();
   return t;
 }
 
@@ -35,13 +35,11 @@ Bytes selection_header(std::size_t n, const std::vector<std::uint32_t>& picked) 
   return b;
 }
 
-std::vector<std::uint32_t> read_selection(const Bytes& msg, std::size_t n,
-                                          std::size_t& header_bytes) {
-  header_bytes = (n + 7) / 8;
-  if (msg.size() < header_bytes) throw std::runtime_error("multiscatter: message too short");
+std::vector<std::uint32_t> read_selection(RecordReader& in, std::size_t n) {
+  const std::uint8_t* mask = in.get_bytes((n + 7) / 8);
   std::vector<std::uint32_t> picked;
   for (std::size_t i = 0; i < n; ++i)
-    if (msg[i / 8] & (1u << (i % 8))) picked.push_back(std::uint32_t(i));
+    if (mask[i / 8] & (1u << (i % 8))) picked.push_back(std::uint32_t(i));
   return picked;
 }
 

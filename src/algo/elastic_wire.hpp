@@ -23,15 +23,14 @@ std::size_t triangle_wire_bytes(const Scene& s);
 
 // Appends triangle t's wire form (vertex numbers, then the material when `with_material`).
 void append_triangle(Bytes& b, const TriangleRecord& t, bool with_material);
-// Reads one back at p, as triangle `id` (of `material` when materials do not travel).
-TriangleRecord read_triangle(const std::uint8_t* p, std::uint32_t id, bool with_material,
+// Reads one back, as triangle `id` (of `material` when materials do not travel).
+TriangleRecord read_triangle(RecordReader& in, std::uint32_t id, bool with_material,
                              std::uint32_t material);
 
 // A message carrying `picked` (ascending indices into a block of n triangles): the block's
 // bitmask; `append` then writes each picked triangle's record.
 Bytes selection_header(std::size_t n, const std::vector<std::uint32_t>& picked);
-// The picked indices of a block of n triangles from a message's header; `header_bytes` its size.
-std::vector<std::uint32_t> read_selection(const Bytes& msg, std::size_t n,
-                                          std::size_t& header_bytes);
+// The picked indices of a block of n triangles, read from a message's header.
+std::vector<std::uint32_t> read_selection(RecordReader& in, std::size_t n);
 
 } // namespace zc::elastic

@@ -18,55 +18,43 @@ struct Block {
   Message data;
 };
 
-constexpr std::size_t kFrameBytes = 4, kBlockFrameBytes = 12;
+constexpr std::size_t kFrameBytes = 4, kBlockFrameBytes = 12; // charged
+constexpr std::size_t kBlockWireBytes = 4 + 8 + 8;            // in the payload
 
 Message pack_blocks(const std::vector<Block>& blocks) {
-  std::size_t total = 4 + 20 * blocks.size(); // sized once: one allocation, no zero-fill
+  std::size_t total = 4 + kBlockWireBytes * blocks.size(); // reserved once: one allocation
   std::size_t charged = kFrameBytes + kBlockFrameBytes * blocks.size();
   for (const auto& k : blocks) {
     total += k.data.payload.size();
     charged += k.data.charged;
   }
-  Bytes b;
-  b.reserve(total);
-  const std::uint32_t n = std::uint32_t(blocks.size());
-  append(b, &n, 1);
+  RecordWriter b(total);
+  b.put(std::uint32_t(blocks.size()));
   for (const auto& k : blocks) {
-    const std::int32_t o = k.owner;
-    const std::uint64_t s = k.data.payload.size(), c = k.data.charged;
-    append(b, &o, 1);
-    append(b, &s, 1);
-    append(b, &c, 1);
+    b.put(std::int32_t(k.owner));
+    b.put(std::uint64_t(k.data.payload.size()));
+    b.put(std::uint64_t(k.data.charged));
   }
   for (const auto& k : blocks)
-    b.insert(b.end(), k.data.payload.begin(), k.data.payload.end());
-  return {std::move(b), charged};
+    b.put(k.data.payload);
+  return {std::move(b).take(), charged};
 }
 
 std::vector<Block> unpack_blocks(const Message& m) {
-  const Bytes& b = m.payload;
-  std::size_t at = 0;
-  auto take = [&](void* dst, std::size_t n) {
-    if (at + n > b.size()) throw std::runtime_error("collective: truncated block payload");
-    std::memcpy(dst, b.data() + at, n);
-    at += n;
-  };
-  std::uint32_t n = 0;
-  take(&n, 4);
+  RecordReader in(m.payload, "collective");
+  const auto n = in.get<std::uint32_t>();
+  in.require(n, kBlockWireBytes); // before allocating what a corrupt count asks for
   std::vector<Block> blocks(n);
   std::vector<std::uint64_t> sizes(n);
   for (std::uint32_t i = 0; i < n; ++i) {
-    std::int32_t o;
-    std::uint64_t c;
-    take(&o, 4);
-    take(&sizes[i], 8);
-    take(&c, 8);
-    blocks[i].owner = o;
-    blocks[i].data.charged = std::size_t(c);
+    blocks[i].owner = in.get<std::int32_t>();
+    sizes[i] = in.get<std::uint64_t>();
+    blocks[i].data.charged = std::size_t(in.get<std::uint64_t>());
   }
   for (std::uint32_t i = 0; i < n; ++i) {
-    blocks[i].data.payload.resize(sizes[i]);
-    if (sizes[i]) take(blocks[i].data.payload.data(), sizes[i]);
+    in.require(sizes[i], 1);
+    const std::uint8_t* p = in.get_bytes(std::size_t(sizes[i]));
+    blocks[i].data.payload.assign(p, p + sizes[i]);
   }
   return blocks;
 }

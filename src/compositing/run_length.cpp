@@ -2,10 +2,8 @@
 // pixel array (winning_pixels.cpp), charged as IceT encodes them.
 #include "compositing/run_length.hpp"
 
-#include <cstring>
-#include <stdexcept>
-
 #include "compositing/winning_pixels.hpp"
+#include "util/record_io.hpp"
 
 namespace zc::compositing {
 
@@ -15,24 +13,20 @@ std::size_t encoded(std::size_t runs, std::size_t pixels, const PixelRecords& r)
   return (runs + 1) * 2 * r.count + pixels * r.location;
 }
 
-template <class T> T read(const Bytes& b, std::size_t at) {
-  if (at + sizeof(T) > b.size()) throw std::logic_error("run length: truncated message");
-  T v;
-  std::memcpy(&v, b.data() + at, sizeof(T));
-  return v;
-}
-
 } // namespace
 
 Message run_length_message(Bytes payload, const PixelRecords& records) {
   // serialize_sparse: u32 rows; (u32 y, u32 count) a row; then the pixels, x (u16) first.
-  const std::uint32_t rows = payload.empty() ? 0 : read<std::uint32_t>(payload, 0);
-  std::size_t at = 4 + 8 * std::size_t(rows), runs = 0, pixels = 0;
+  RecordReader in(payload, "run length");
+  const std::uint32_t rows = payload.empty() ? 0 : in.get<std::uint32_t>();
+  const auto heads = in.get_vector<std::uint32_t>(2 * std::size_t(rows));
+  std::size_t runs = 0, pixels = 0;
   for (std::uint32_t i = 0; i < rows; ++i) {
-    const std::uint32_t n = read<std::uint32_t>(payload, 4 + 8 * std::size_t(i) + 4);
+    const std::uint32_t n = heads[2 * std::size_t(i) + 1];
     int last = -2;
-    for (std::uint32_t k = 0; k < n; ++k, at += kWirePixelBytes) {
-      const int x = read<std::uint16_t>(payload, at);
+    for (std::uint32_t k = 0; k < n; ++k) {
+      const int x = in.get<std::uint16_t>();
+      (void)in.get_bytes(kWirePixelBytes - sizeof(std::uint16_t)); // colour, depth, id
       runs += x != last + 1;
       last = x;
     }

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cstring>
 
+#include "util/record_io.hpp"
+
 namespace zc::compositing {
 
 namespace {
@@ -123,8 +125,8 @@ private:
 } // namespace
 
 Message sparse_message(Bytes payload, const PixelRecords& rec) {
-  std::uint32_t rows = 0;
-  if (payload.size() >= sizeof rows) std::memcpy(&rows, payload.data(), sizeof rows);
+  const std::uint32_t rows =
+      payload.size() >= 4 ? RecordReader(payload, "winning pixels").get<std::uint32_t>() : 0;
   const std::size_t header = 4 + 8 * std::size_t(rows);
   const std::size_t pixels = (payload.size() - std::min(header, payload.size())) / kWirePixelBytes;
   const std::size_t charged = header + pixels * rec.pixel;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "raster/zbuffer.hpp"
+#include "util/record_io.hpp"
 
 namespace zc {
 
@@ -136,34 +137,20 @@ void scatter_active(const ActivePixels& a, Framebuffer& fb) {
 }
 
 namespace {
-// Writes v at out[at] (the buffer is sized up front: vector::insert of a few bytes trips a GCC 12
-// -Wstringop-overflow false positive).
-template <class T> void put(std::vector<std::uint8_t>& out, std::size_t& at, const T& v) {
-  std::memcpy(out.data() + at, &v, sizeof(T));
-  at += sizeof(T);
-}
-template <class T> T get(const std::uint8_t*& p, const std::uint8_t* end) {
-  if (std::size_t(end - p) < sizeof(T)) throw std::runtime_error("active pixels: truncated");
-  T v;
-  std::memcpy(&v, p, sizeof(T));
-  p += sizeof(T);
-  return v;
-}
+constexpr const char* kWhat = "active pixels";
 // One pixel on the wire: x(2) rgb(3) z(4) id(4) = kWirePixelBytes.
-void put_pixel(std::vector<std::uint8_t>& out, std::size_t& at, const WinningPixel& p) {
-  put(out, at, p.x);
-  std::memcpy(out.data() + at, p.rgb, 3);
-  at += 3;
-  put(out, at, p.z);
-  put(out, at, p.id);
+void put_pixel(RegionWriter& out, const WinningPixel& p) {
+  out.put(p.x);
+  out.put_bytes(p.rgb, 3);
+  out.put(p.z);
+  out.put(p.id);
 }
-WinningPixel get_pixel(const std::uint8_t*& p, const std::uint8_t* end) {
+WinningPixel get_pixel(RecordReader& in) {
   WinningPixel px;
-  px.x = get<std::uint16_t>(p, end);
-  for (int k = 0; k < 3; ++k)
-    px.rgb[k] = get<std::uint8_t>(p, end);
-  px.z = get<float>(p, end);
-  px.id = get<std::uint32_t>(p, end);
+  px.x = in.get<std::uint16_t>();
+  in.get(px.rgb, 3);
+  px.z = in.get<float>();
+  px.id = in.get<std::uint32_t>();
   return px;
 }
 } // namespace
@@ -175,40 +162,41 @@ std::vector<std::uint8_t> serialize_sparse(const ActivePixels& a) {
   for (int y = a.y0; y < a.y1; ++y)
     rows += a.row_count(y) > 0;
   std::vector<std::uint8_t> out(4 + 8 * std::size_t(rows) + kWirePixelBytes * a.pixels.size());
-  std::size_t at = 0;
-  put(out, at, rows);
+  RegionWriter w(out.data(), out.size());
+  w.put(rows);
   for (int y = a.y0; y < a.y1; ++y)
     if (a.row_count(y)) {
-      put(out, at, std::uint32_t(y));
-      put(out, at, a.row_count(y));
+      w.put(std::uint32_t(y));
+      w.put(a.row_count(y));
     }
   for (const auto& p : a.pixels)
-    put_pixel(out, at, p);
+    put_pixel(w, p);
   return out;
 }
 
 ActivePixels deserialize_sparse(const std::uint8_t* p, std::size_t size, int width, int y0,
                                 int y1) {
-  const std::uint8_t* end = p + size;
+  RecordReader in(p, size, kWhat);
   ActivePixels a;
   a.width = width;
   a.y0 = y0;
   a.y1 = y1;
   a.row_begin.assign(std::size_t(y1 - y0) + 1, 0);
-  const std::uint32_t rows = get<std::uint32_t>(p, end);
+  const std::uint32_t rows = in.get<std::uint32_t>();
   std::vector<std::uint32_t> count(std::size_t(y1 - y0), 0);
   int last = y0 - 1;
   for (std::uint32_t i = 0; i < rows; ++i) {
-    const int y = int(get<std::uint32_t>(p, end));
+    const int y = int(in.get<std::uint32_t>());
     if (y < y0 || y >= y1 || y <= last) throw std::runtime_error("active pixels: bad row");
-    count[y - y0] = get<std::uint32_t>(p, end);
+    count[y - y0] = in.get<std::uint32_t>();
     last = y;
   }
   for (int y = y0; y < y1; ++y)
     a.row_begin[y - y0 + 1] = a.row_begin[y - y0] + count[y - y0];
+  in.require(a.row_begin.back(), kWirePixelBytes);
   a.pixels.resize(a.row_begin.back());
   for (auto& px : a.pixels)
-    px = get_pixel(p, end);
+    px = get_pixel(in);
   return a;
 }
 
@@ -231,22 +219,24 @@ serialize_sparse_by_owner(const ActivePixels& a, const std::vector<int>& owner, 
     }
   const std::size_t n_parts = std::size_t(parts);
   std::vector<std::vector<std::uint8_t>> out(n_parts);
-  std::vector<std::size_t> head(n_parts, 4), body(n_parts);
+  // Each part's row headers and pixels are filled at once, each through its own region.
+  std::vector<RegionWriter> head, body;
   for (std::size_t k = 0; k < out.size(); ++k) {
-    out[k].resize(4 + 8 * std::size_t(rows[k]) + kWirePixelBytes * pixels[k]);
-    std::size_t at = 0;
-    put(out[k], at, rows[k]);
-    body[k] = 4 + 8 * std::size_t(rows[k]);
+    const std::size_t header = 4 + 8 * std::size_t(rows[k]);
+    out[k].resize(header + kWirePixelBytes * pixels[k]);
+    head.emplace_back(out[k].data(), header);
+    body.emplace_back(out[k].data() + header, out[k].size() - header);
+    head[k].put(rows[k]);
   }
   for (int y = a.y0; y < a.y1; ++y) {
     const std::uint32_t n = a.row_count(y);
     if (!n || dest(y) < 0) continue;
     const std::size_t k = std::size_t(dest(y));
-    put(out[k], head[k], std::uint32_t(y));
-    put(out[k], head[k], n);
+    head[k].put(std::uint32_t(y));
+    head[k].put(n);
     for (std::uint32_t i = a.row_begin[std::size_t(y - a.y0)];
          i < a.row_begin[std::size_t(y - a.y0) + 1]; ++i)
-      put_pixel(out[k], body[k], a.pixels[i]);
+      put_pixel(body[k], a.pixels[i]);
   }
   return out;
 }
@@ -260,20 +250,21 @@ ActivePixels merge_sparse(const std::vector<const std::vector<std::uint8_t>*>& m
   std::vector<Segment> segments; // message by message, rows increasing within a message
   pixel_counts.assign(messages.size(), 0);
   for (std::size_t i = 0; i < messages.size(); ++i) {
-    const std::uint8_t* p = messages[i]->data();
-    const std::uint8_t* end = p + messages[i]->size();
-    const std::uint32_t rows = get<std::uint32_t>(p, end);
+    RecordReader in(*messages[i], kWhat);
+    const std::uint32_t rows = in.get<std::uint32_t>();
     const std::size_t first = segments.size();
     int last = y0 - 1;
     for (std::uint32_t r = 0; r < rows; ++r) {
-      const int y = int(get<std::uint32_t>(p, end));
+      const int y = int(in.get<std::uint32_t>());
       if (y < y0 || y >= y1 || y <= last) throw std::runtime_error("active pixels: bad row");
-      segments.push_back({y, std::vector<WinningPixel>(get<std::uint32_t>(p, end))});
+      const std::uint32_t n = in.get<std::uint32_t>();
+      in.require(n, kWirePixelBytes);
+      segments.push_back({y, std::vector<WinningPixel>(n)});
       last = y;
     }
     for (std::size_t s = first; s < segments.size(); ++s) {
       for (auto& px : segments[s].pixels)
-        px = get_pixel(p, end);
+        px = get_pixel(in);
       pixel_counts[i] += segments[s].pixels.size();
     }
   }

@@ -1,4 +1,4 @@
-// The wire format's reader and writer (comm/wire.hpp): what is written reads back, and a
+// The wire format's reader and writers (util/record_io.hpp): what is written reads back, and a
 // truncated or corrupt payload is refused instead of read past its end.
 #include <cstdint>
 #include <stdexcept>
@@ -6,7 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "comm/wire.hpp"
+#include "comm/wire.hpp" // unpack
+#include "util/record_io.hpp"
 
 namespace zc {
 namespace {
@@ -69,6 +70,16 @@ TEST(RecordWire, ACorruptCountIsRefusedBeforeAnythingIsAllocated) {
   EXPECT_THROW((void)r.get_bytes(9), std::runtime_error);
   EXPECT_EQ(r.remaining(), 8u);                          // a refused read consumes nothing
   EXPECT_THROW((void)r.get_sized(), std::runtime_error); // a length of 4 GiB - 1
+}
+
+TEST(RecordWire, ARegionWriterFillsItsRegionAndRefusesToOverrunIt) {
+  Bytes b(6, 0);
+  RegionWriter head(b.data(), 2), body(b.data() + 2, 4);
+  body.put(std::uint32_t(0x04030201));
+  head.put(std::uint16_t(0x0605));
+  EXPECT_TRUE(head.full() && body.full());
+  EXPECT_EQ(b, (Bytes{5, 6, 1, 2, 3, 4}));
+  EXPECT_THROW(head.put(std::uint8_t(1)), std::logic_error);
 }
 
 } // namespace
