@@ -1,6 +1,7 @@
 // Blazek 1991's four decompositions on the simulated iPSC/2 (with its host computer, srm).
 #include <gtest/gtest.h>
 
+#include "algo/blazek_methods.hpp"
 #include "sim_fixtures.hpp"
 
 using namespace zc;
@@ -8,8 +9,8 @@ using namespace zc::test;
 
 namespace {
 
-nlohmann::json blazek(const std::string& algo, const std::string& scene, int P, int size,
-                      std::map<std::string, std::string> opt = {}, bool compare = true) {
+nlohmann::json run_method(const std::string& algo, const std::string& scene, int P, int size,
+                          std::map<std::string, std::string> opt = {}, bool compare = true) {
   SimConfig c = sim_config("ipsc2", P, Topology::Cube, Fidelity::Circuit);
   c.algorithm = algo;
   c.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/" + scene;
@@ -30,29 +31,43 @@ double busy_spread(const nlohmann::json& r) {
   return mx - mn;
 }
 
+// Every method the registry declares for Blazek, with each value of its choice options and the
+// extremes of its integer ones (--packet 10 and 1000).
+std::vector<std::pair<std::string, std::map<std::string, std::string>>> methods() {
+  std::vector<std::pair<std::string, std::map<std::string, std::string>>> v;
+  for (const Algorithm& a : blazek_algorithms()) {
+    if (a.options.empty()) v.push_back({a.name, {}});
+    for (const OptionSpec& o : a.options) {
+      if (o.kind == OptionSpec::Kind::Choice)
+        for (const auto& c : o.choices)
+          v.push_back({a.name, {{o.name, c}}});
+      if (o.kind == OptionSpec::Kind::Integer)
+        for (long long n : {o.min, o.max})
+          v.push_back({a.name, {{o.name, std::to_string(n)}}});
+    }
+  }
+  return v;
+}
+
 } // namespace
 
 TEST(Blazek, EveryMethodOnEveryCubeGivesTheSequentialImage) {
-  const std::vector<std::pair<std::string, std::map<std::string, std::string>>> methods = {
-      {"host-initiated", {{"packet", "10"}}},
-      {"host-initiated", {{"packet", "1000"}}},
-      {"node-initiated", {}},
-      {"object-forwarding", {{"forward", "object"}}},
-      {"object-forwarding", {{"forward", "polygons"}}},
-      {"host-broadcast", {{"lines", "strips"}}},
-      {"host-broadcast", {{"lines", "interleaved"}}}};
+  const auto methods = ::methods();
+  ASSERT_EQ(methods.size(), 7u); // four methods, two with two choices, packet at both extremes
   for (const char* scene : {"scenes/blazek_fig9.sdl", "scenes/blazek/spheres_16.json"})
     for (const auto& [m, opt] : methods)
       for (int P : {1, 2, 4, 8, 16, 32}) {
-        auto r = blazek(m, scene, P, 64, opt);
+        auto r = run_method(m, scene, P, 64, opt);
         ASSERT_EQ(r["status"], "ok") << r.dump();
         EXPECT_EQ(r["image"]["identical_to_sequential"], true) << m << " P=" << P << " " << scene;
       }
 }
 
 TEST(Blazek, PacketSizeChangesTheTimeNotTheImage) {
-  auto a = blazek("host-initiated", "scenes/blazek/spheres_16.json", 8, 128, {{"packet", "10"}});
-  auto b = blazek("host-initiated", "scenes/blazek/spheres_16.json", 8, 128, {{"packet", "1000"}});
+  auto a =
+      run_method("host-initiated", "scenes/blazek/spheres_16.json", 8, 128, {{"packet", "10"}});
+  auto b =
+      run_method("host-initiated", "scenes/blazek/spheres_16.json", 8, 128, {{"packet", "1000"}});
   ASSERT_EQ(a["status"], "ok") << a.dump();
   ASSERT_EQ(b["status"], "ok") << b.dump();
   EXPECT_EQ(a["image"]["sha256"], b["image"]["sha256"]);
@@ -63,7 +78,7 @@ TEST(Blazek, PacketSizeChangesTheTimeNotTheImage) {
 TEST(Blazek, ForwardingGrowsAsStripsNarrow) {
   std::int64_t last = -1;
   for (int P : {2, 4, 8, 16, 32}) {
-    auto r = blazek("object-forwarding", "scenes/blazek/spheres_16.json", P, 128, {}, false);
+    auto r = run_method("object-forwarding", "scenes/blazek/spheres_16.json", P, 128, {}, false);
     const auto f = r["blazek"]["forwarded_messages"].get<std::int64_t>();
     EXPECT_GT(f, last) << "P=" << P;
     last = f;
@@ -71,9 +86,10 @@ TEST(Blazek, ForwardingGrowsAsStripsNarrow) {
 }
 
 TEST(Blazek, InterleavedLinesBalanceAClusteredSceneBetterThanStrips) {
-  auto s = blazek("host-broadcast", "scenes/blazek/clustered.json", 8, 128, {{"lines", "strips"}});
-  auto i =
-      blazek("host-broadcast", "scenes/blazek/clustered.json", 8, 128, {{"lines", "interleaved"}});
+  auto s =
+      run_method("host-broadcast", "scenes/blazek/clustered.json", 8, 128, {{"lines", "strips"}});
+  auto i = run_method("host-broadcast", "scenes/blazek/clustered.json", 8, 128,
+                      {{"lines", "interleaved"}});
   ASSERT_EQ(s["status"], "ok") << s.dump();
   ASSERT_EQ(i["status"], "ok") << i.dump();
   EXPECT_EQ(s["image"]["sha256"], i["image"]["sha256"]);
@@ -93,11 +109,11 @@ TEST(Blazek, A1024FrameBufferDoesNotFitAFourMegabyteNodeButStripsDo) {
 
 TEST(Blazek, NodesTransformATessellationsVerticesOnceShippedPolygonsThreeTimes) {
   const char* scene = "scenes/blazek/spheres_16.json";
-  const auto seq = blazek("sequential", scene, 1, 64, {}, false);
+  const auto seq = run_method("sequential", scene, 1, 64, {}, false);
   const auto vt = [](const nlohmann::json& r) {
     return r["counters"]["vertices_transformed"].get<std::uint64_t>();
   };
-  EXPECT_EQ(vt(blazek("node-initiated", scene, 4, 64)), vt(seq));
-  EXPECT_EQ(vt(blazek("host-initiated", scene, 4, 64)),
+  EXPECT_EQ(vt(run_method("node-initiated", scene, 4, 64)), vt(seq));
+  EXPECT_EQ(vt(run_method("host-initiated", scene, 4, 64)),
             3 * seq["scene"]["triangles"].get<std::uint64_t>());
 }
