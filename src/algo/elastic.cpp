@@ -88,18 +88,19 @@ multiscatter_triangles(NodeContext& ctx, const LocalScene& local,
   std::vector<Message> send(P);
   std::size_t gathered = 0;
   for (int k = 0; k < P; ++k) {
-    send[k].payload = selection_header(tris.size(), picked[k]);
+    Bytes b = selection_header(tris.size(), picked[k]);
     for (auto i : picked[k]) {
-      append_triangle(send[k].payload, tris[i], with_material);
-      pv.append_extra(send[k].payload, tris[i]);
+      append_triangle(b, tris[i], with_material);
+      pv.append_extra(b, tris[i]);
     }
+    send[k].payload = std::move(b);
     send[k].charged = picked[k].size() * charged_record;
     gathered += send[k].charged;
   }
   ctx.charge_packing(gathered);
   std::vector<Bytes> got;
   for (auto& m : coll::alltoallv(ctx.comm(), std::move(send)))
-    got.push_back(std::move(m.payload));
+    got.push_back(std::move(m.payload).take());
   std::vector<Record> slice;
   for (int s = 0; s < P; ++s) {
     const BlockRange block = block_range(local.scene_triangles, P, s);

@@ -3,6 +3,7 @@
 #include "algo/elastic_vertices.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "comm/collectives.hpp"
 #include "comm/wire.hpp"
@@ -12,16 +13,21 @@ namespace zc::elastic {
 void BroadcastVertices::exchange(NodeContext& ctx, const LocalScene& local,
                                  const std::vector<ProjectedVertex>& mine) {
   auto ph = ctx.phase("multibroadcast_vertices");
-  all.reserve(local.scene_vertices);
   // Charged as the paper's projected vertices (screen point and R.G.B. colour, records.hpp).
   const Message m{pack(mine), mine.size() * records::charles::kProjectedVertex};
-  for (auto& b : coll::allgatherv(ctx.comm(), m)) {
-    auto part = unpack<ProjectedVertex>(b.payload);
-    all.insert(all.end(), part.begin(), part.end());
+  blocks = coll::allgatherv(ctx.comm(), m);
+  scene_vertices = local.scene_vertices;
+  std::size_t received = 0;
+  for (std::size_t k = 0; k < blocks.size(); ++k) {
+    block.push_back(blocks[k].payload.records<ProjectedVertex>());
+    if (block.back().size() != block_range(scene_vertices, int(blocks.size()), int(k)).size())
+      throw std::runtime_error(
+          "multibroadcast: a node's projected vertices do not match its block");
+    received += block.back().size();
   }
   // Each node's projected vertices are one contiguous array, multi-broadcast in place into the
   // array of all of them (PPCM): no packing charged.
-  bytes = double(all.size() * records::charles::kProjectedVertex);
+  bytes = double(received * records::charles::kProjectedVertex);
 }
 
 namespace {

@@ -7,25 +7,36 @@
 //   record()/triangle()/vertices()  making and reading such a record.
 #include <cstdint>
 #include <cstring>
+#include <span>
 #include <unordered_map>
 #include <vector>
 
 #include "algo/elastic_steps.hpp"
 #include "algo/records.hpp"
 #include "comm/wire.hpp"
+#include "util/block_split.hpp"
 
 namespace zc::elastic {
 
 // §4 MultiBroadcast(Projected Vertices): every node receives all of them, so a triangle travels
 // as its bare record.
+// The node reads them in place in the blocks it received: those blocks' payloads are the senders',
+// shared by every node of the simulation (the modelled node holds its own copy of all of them, and
+// is charged for it: `bytes`).
 struct BroadcastVertices {
   using Record = TriangleRecord;
-  std::vector<ProjectedVertex> all; // indexed by vertex id
-  double bytes = 0;                 // held by the node (modelled memory)
+  std::vector<Message> blocks;                         // node k's projected vertices, by k
+  std::vector<std::span<const ProjectedVertex>> block; // the same, read in place
+  std::size_t scene_vertices = 0; // V: node k holds the ids of block_range(V, P, k)
+  double bytes = 0;               // held by the node (modelled memory)
 
   void exchange(NodeContext& ctx, const LocalScene& local,
                 const std::vector<ProjectedVertex>& mine);
-  const ProjectedVertex& at(std::uint32_t id) const { return all[id]; }
+  const ProjectedVertex& at(std::uint32_t id) const {
+    const int P = int(block.size());
+    const int k = block_of(scene_vertices, P, id);
+    return block[std::size_t(k)][id - block_begin(scene_vertices, P, k)];
+  }
   Record record(const TriangleRecord& t) const { return t; }
   // What a MultiScatter record carries besides the triangle's wire form: nothing (and what the
   // modelled machine is charged for it, records.hpp).
@@ -35,7 +46,7 @@ struct BroadcastVertices {
   static const TriangleRecord& triangle(const Record& r) { return r; }
   void vertices(const Record& r, const ProjectedVertex* p[3]) const {
     for (int k = 0; k < 3; ++k)
-      p[k] = &all[r.tri.v[k]];
+      p[k] = &at(r.tri.v[k]);
   }
 };
 

@@ -9,55 +9,10 @@
 namespace zc::coll {
 namespace {
 
-// Several blocks in one message: u32 count, then per block (i32 owner, u64 size, u64 charged),
-// then the data. The message is charged its framing as a program would send it (the count, and an
-// owner and a length a block: 4 + 12 bytes a block) plus the sum of the blocks' charged sizes; the
-// charged size in the payload is zcube's, so that the node a block reaches charges it again.
-struct Block {
-  int owner;
-  Message data;
-};
-
-constexpr std::size_t kFrameBytes = 4, kBlockFrameBytes = 12; // charged
-constexpr std::size_t kBlockWireBytes = 4 + 8 + 8;            // in the payload
-
-Message pack_blocks(const std::vector<Block>& blocks) {
-  std::size_t total = 4 + kBlockWireBytes * blocks.size(); // reserved once: one allocation
-  std::size_t charged = kFrameBytes + kBlockFrameBytes * blocks.size();
-  for (const auto& k : blocks) {
-    total += k.data.payload.size();
-    charged += k.data.charged;
-  }
-  RecordWriter b(total);
-  b.put(std::uint32_t(blocks.size()));
-  for (const auto& k : blocks) {
-    b.put(std::int32_t(k.owner));
-    b.put(std::uint64_t(k.data.payload.size()));
-    b.put(std::uint64_t(k.data.charged));
-  }
-  for (const auto& k : blocks)
-    b.put(k.data.payload);
-  return {std::move(b).take(), charged};
-}
-
-std::vector<Block> unpack_blocks(const Message& m) {
-  RecordReader in(m.payload, "collective");
-  const auto n = in.get<std::uint32_t>();
-  in.require(n, kBlockWireBytes); // before allocating what a corrupt count asks for
-  std::vector<Block> blocks(n);
-  std::vector<std::uint64_t> sizes(n);
-  for (std::uint32_t i = 0; i < n; ++i) {
-    blocks[i].owner = in.get<std::int32_t>();
-    sizes[i] = in.get<std::uint64_t>();
-    blocks[i].data.charged = std::size_t(in.get<std::uint64_t>());
-  }
-  for (std::uint32_t i = 0; i < n; ++i) {
-    in.require(sizes[i], 1);
-    const std::uint8_t* p = in.get_bytes(std::size_t(sizes[i]));
-    blocks[i].data.payload.assign(p, p + sizes[i]);
-  }
-  return blocks;
-}
+// Several blocks travel as one message (Comm::isend_blocks): charged their framing as a program
+// would send it (the count, and an owner and a length a block: 4 + 12 bytes a block) plus the sum
+// of the blocks' charged sizes; each block keeps its charged size, so that the node a block reaches
+// charges it again, and its payload, which the simulator shares instead of copying.
 
 std::vector<Message> uncharged_all(std::vector<Bytes> parts) {
   std::vector<Message> m;
@@ -71,7 +26,7 @@ std::vector<Bytes> payloads(std::vector<Message> m) {
   std::vector<Bytes> b;
   b.reserve(m.size());
   for (auto& x : m)
-    b.push_back(std::move(x.payload));
+    b.push_back(std::move(x.payload).take());
   return b;
 }
 
@@ -211,7 +166,7 @@ Message scatterv(Comm& c, int root, std::vector<Message> parts, int tag) {
     throw std::invalid_argument("scatterv: the root needs one block per node");
   if (p == 1) return std::move(parts[0]);
   const int rel = rel_of(c, r, root);
-  std::vector<Block> mine; // blocks this node holds, by relative owner
+  Blocks mine; // blocks this node holds, by relative owner
   if (rel == 0)
     for (int k = 0; k < p; ++k)
       mine.push_back({k, std::move(parts[abs_of(c, k, root)])});
@@ -221,34 +176,35 @@ Message scatterv(Comm& c, int root, std::vector<Message> parts, int tag) {
     for (int i = d - 1; i >= 0; --i) {
       const int bit = 1 << i;
       if ((rel & (2 * bit - 1)) == 0) {
-        std::vector<Block> keep, give;
+        Blocks keep, give;
         for (auto& b : mine)
           ((b.owner & bit) ? give : keep).push_back(std::move(b));
-        c.send(abs_of(c, rel | bit, root), tag, pack_blocks(give));
+        c.send_blocks(abs_of(c, rel | bit, root), tag, std::move(give));
         mine = std::move(keep);
       } else if ((rel & (2 * bit - 1)) == bit) {
-        mine = unpack_blocks(c.recv_message(abs_of(c, rel ^ bit, root), tag));
+        mine = c.recv_blocks(abs_of(c, rel ^ bit, root), tag);
       }
     }
   } else {
     const int R = right_arm(p);
     if (rel == 0) {
-      std::vector<Block> right, left;
+      Blocks right, left;
       for (auto& b : mine)
         if (b.owner != 0) (b.owner <= R ? right : left).push_back(std::move(b));
       std::erase_if(mine, [](const Block& b) { return b.owner != 0; });
       SendHandle h;
-      if (!left.empty()) h = c.isend(abs_of(c, p - 1, root), tag, pack_blocks(left));
-      if (!right.empty()) c.send(abs_of(c, 1, root), tag, pack_blocks(right));
+      if (!left.empty()) h = c.isend_blocks(abs_of(c, p - 1, root), tag, std::move(left));
+      if (!right.empty()) c.send_blocks(abs_of(c, 1, root), tag, std::move(right));
       if (h) h->wait();
     } else {
       const bool right = rel <= R;
-      mine = unpack_blocks(c.recv_message(abs_of(c, right ? rel - 1 : (rel + 1) % p, root), tag));
-      std::vector<Block> rest;
+      mine = c.recv_blocks(abs_of(c, right ? rel - 1 : (rel + 1) % p, root), tag);
+      Blocks rest;
       for (auto& b : mine)
         if (b.owner != rel) rest.push_back(std::move(b));
       std::erase_if(mine, [&](const Block& b) { return b.owner != rel; });
-      if (!rest.empty()) c.send(abs_of(c, right ? rel + 1 : rel - 1, root), tag, pack_blocks(rest));
+      if (!rest.empty())
+        c.send_blocks(abs_of(c, right ? rel + 1 : rel - 1, root), tag, std::move(rest));
     }
   }
   for (auto& b : mine)
@@ -268,16 +224,16 @@ std::vector<Message> gatherv(Comm& c, int root, Message data, int tag) {
     return out;
   }
   const int rel = rel_of(c, r, root);
-  std::vector<Block> mine{{rel, std::move(data)}};
+  Blocks mine{{rel, std::move(data)}};
   if (cube(c)) {
     for (int i = 0; (1 << i) < p; ++i) {
       const int bit = 1 << i;
       if (rel & (bit - 1)) break;
       if (rel & bit) {
-        c.send(abs_of(c, rel ^ bit, root), tag, pack_blocks(mine));
+        c.send_blocks(abs_of(c, rel ^ bit, root), tag, std::move(mine));
         return {};
       }
-      for (auto& b : unpack_blocks(c.recv_message(abs_of(c, rel ^ bit, root), tag)))
+      for (auto& b : c.recv_blocks(abs_of(c, rel ^ bit, root), tag))
         mine.push_back(std::move(b));
     }
   } else {
@@ -285,17 +241,16 @@ std::vector<Message> gatherv(Comm& c, int root, Message data, int tag) {
     if (rel != 0) {
       const bool right = rel <= R;
       if (right ? rel < R : rel > R + 1)
-        for (auto& b :
-             unpack_blocks(c.recv_message(abs_of(c, right ? rel + 1 : rel - 1, root), tag)))
+        for (auto& b : c.recv_blocks(abs_of(c, right ? rel + 1 : rel - 1, root), tag))
           mine.push_back(std::move(b));
-      c.send(abs_of(c, right ? rel - 1 : (rel + 1) % p, root), tag, pack_blocks(mine));
+      c.send_blocks(abs_of(c, right ? rel - 1 : (rel + 1) % p, root), tag, std::move(mine));
       return {};
     }
     if (R >= 1)
-      for (auto& b : unpack_blocks(c.recv_message(abs_of(c, 1, root), tag)))
+      for (auto& b : c.recv_blocks(abs_of(c, 1, root), tag))
         mine.push_back(std::move(b));
     if (p - 1 > R)
-      for (auto& b : unpack_blocks(c.recv_message(abs_of(c, p - 1, root), tag)))
+      for (auto& b : c.recv_blocks(abs_of(c, p - 1, root), tag))
         mine.push_back(std::move(b));
   }
   out.resize(p);
@@ -312,11 +267,11 @@ std::vector<Message> allgatherv(Comm& c, Message data, int tag) {
   const int p = P(c), r = c.rank();
   std::vector<Message> out(p);
   if (cube(c)) {
-    std::vector<Block> mine{{r, std::move(data)}};
+    Blocks mine{{r, std::move(data)}};
     for (int i = 0; (1 << i) < p; ++i) {
       const int partner = r ^ (1 << i);
-      auto h = c.isend(partner, tag, pack_blocks(mine));
-      for (auto& b : unpack_blocks(c.recv_message(partner, tag)))
+      auto h = c.isend_blocks(partner, tag, mine); // copies references, not bytes
+      for (auto& b : c.recv_blocks(partner, tag))
         mine.push_back(std::move(b));
       h->wait();
     }

@@ -8,27 +8,45 @@
 // sends (docs/papers.md, "Records"), when zcube's payload carries bytes that program never sent
 // (a triangle id for the depth tie-break, clip-space floats). The charged size travels with the
 // message, so a collective that forwards it charges what it received.
+//
+// A payload is immutable once made and shared, not copied, between the nodes a message reaches
+// (payload.hpp): copying a Message copies a reference.
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <vector>
 
+#include "comm/payload.hpp"
 #include "machine/topology.hpp"
 
 namespace zc {
 
-using Bytes = std::vector<std::uint8_t>;
-
 // A payload and the bytes the modelled machine is charged for it.
 struct Message {
-  Bytes payload;
+  Payload payload;
   std::size_t charged = 0;
 };
 // A message charged as its payload's size.
-inline Message uncharged(Bytes payload) {
+inline Message uncharged(Payload payload) {
   const std::size_t n = payload.size();
   return {std::move(payload), n};
 }
+
+// One node's block inside a message that carries several (the collectives' forwarding).
+struct Block {
+  int owner;
+  Message data;
+};
+using Blocks = std::vector<Block>;
+// Such a message is charged the blocks' charged sizes plus the framing the modelled program sends:
+// a count (4 bytes), and an owner and a length a block (12 bytes each).
+constexpr std::size_t kBlocksFrameBytes = 4, kBlockFrameBytes = 12;
+std::size_t blocks_charged(const Blocks& blocks);
+// The blocks as one payload (u32 count; per block i32 owner, u64 size, u64 charged; the data),
+// for a backend that sends bytes, and back. The payload size is what a report counts as sent.
+Message pack_blocks(const Blocks& blocks);
+Blocks unpack_blocks(const Message& m);
+std::size_t packed_blocks_size(const Blocks& blocks);
 
 constexpr int kAnySource = -1;
 
@@ -61,10 +79,22 @@ public:
   SendHandle isend(int dst, int tag, Bytes data) {
     return isend(dst, tag, uncharged(std::move(data)));
   }
+  // Several blocks as one message (charged as blocks_charged says), received whole by
+  // recv_blocks. By default packed into one payload; the simulator passes the blocks' shared
+  // payloads on as they are, so a collective forwards what it received without copying it.
+  virtual SendHandle isend_blocks(int dst, int tag, Blocks blocks) {
+    return isend(dst, tag, pack_blocks(blocks));
+  }
+  virtual void send_blocks(int dst, int tag, Blocks blocks) { send(dst, tag, pack_blocks(blocks)); }
+  virtual Blocks recv_blocks(int src, int tag, int* from = nullptr) {
+    return unpack_blocks(recv_message(src, tag, from));
+  }
   // Blocking send: returns when the message has been delivered.
   virtual void send(int dst, int tag, Message m) { isend(dst, tag, std::move(m))->wait(); }
   void send(int dst, int tag, Bytes data) { send(dst, tag, uncharged(std::move(data))); }
-  Bytes recv(int src, int tag, int* from = nullptr) { return recv_message(src, tag, from).payload; }
+  Bytes recv(int src, int tag, int* from = nullptr) {
+    return std::move(recv_message(src, tag, from).payload).take();
+  }
 
   // Virtual (or, for a real backend, wall-clock) time in seconds.
   virtual double now() const = 0;

@@ -88,11 +88,13 @@ private:
   Message pack(const std::vector<std::pair<int, int>>& band, Node& n) {
     const std::size_t W = std::size_t(full_.width());
     Message m;
+    Bytes rows;
     for (auto [y0, y1] : band) {
       Bytes b = full_.pack_locations(std::size_t(y0) * W, std::size_t(y1 - y0) * W);
-      m.payload.insert(m.payload.end(), b.begin(), b.end());
+      rows.insert(rows.end(), b.begin(), b.end());
       m.charged += std::size_t(y1 - y0) * W * rec_.location;
     }
+    m.payload = std::move(rows);
     if (band.size() > 1) {
       n.work.bytes_packed += m.charged;
       n.memory.alloc(double(m.charged), "send buffer");

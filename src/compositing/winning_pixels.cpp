@@ -45,7 +45,7 @@ public:
     if (how == Merge::Lists)
       keep_ = select_rows(mine_, [&](int y) { return r.dest[y - mine_.y0] == r.self; });
     else
-      local_ = std::move(out[std::size_t(r.self)].payload);
+      local_ = std::move(out[std::size_t(r.self)].payload).take();
     out[std::size_t(r.self)] = Message{};
     return out;
   }
@@ -101,7 +101,7 @@ private:
     std::vector<const Bytes*> order{&local_};
     for (const Message& m : in) {
       received += double(m.charged);
-      order.push_back(&m.payload);
+      order.push_back(&m.payload.bytes());
     }
     n.memory.alloc(received, "receive buffers");
     n.memory.release(gathered_);

@@ -115,7 +115,7 @@ SendHandle MpiComm::isend(int dst, int tag, Message m) {
     stats_.log->sends.push_back(
         {dst, tag, m.charged, message_hops(topology_, nodes_, rank_, dst), now()});
   const std::uint64_t charged = m.charged;
-  Bytes& data = m.payload;
+  Bytes data = std::move(m.payload).take(); // copied only when another holder shares it
   const std::size_t at = data.size();
   data.resize(at + sizeof charged);
   std::memcpy(data.data() + at, &charged, sizeof charged);

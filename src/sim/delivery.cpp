@@ -72,12 +72,14 @@ void Delivery::arrived(Transit& m) {
   notify(waiters_[m.src], m);
 }
 
-TransitPtr Delivery::post(int src, int dst, int tag, Message msg) {
+TransitPtr Delivery::post(int src, int dst, int tag, Message msg, Blocks blocks, bool bundle) {
   auto m = std::make_shared<Transit>();
   m->src = src;
   m->dst = dst;
   m->tag = tag;
   m->data = std::move(msg.payload);
+  m->blocks = std::move(blocks);
+  m->bundle = bundle;
   m->charged = msg.charged;
   m->sent_at = sg::Engine::get_clock();
   const double bytes = double(m->charged);

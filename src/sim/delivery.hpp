@@ -29,8 +29,9 @@ public:
   Delivery(SimNetwork& net, Fidelity fidelity, std::vector<simgrid::s4u::Host*> hosts);
 
   // Sends at the current virtual time; the message's arrival is set now or later. The network is
-  // charged m.charged bytes, whatever the payload's size.
-  TransitPtr post(int src, int dst, int tag, Message m);
+  // charged m.charged bytes, whatever the payload's size. A message of several blocks comes as
+  // `blocks` (bundle true), charged m.charged.
+  TransitPtr post(int src, int dst, int tag, Message m, Blocks blocks = {}, bool bundle = false);
   // Blocks rank `self` until message m has arrived (a sender's completion).
   void await_arrival(int self, const Transit& m);
   // Blocks rank `self` until a message from src (or kAnySource) with this tag can be taken.

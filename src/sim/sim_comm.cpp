@@ -39,17 +39,31 @@ void SimComm::check_rank(int r, const char* what) const {
                             std::to_string(size()));
 }
 
-SendHandle SimComm::isend(int dst, int tag, Message msg) {
+SendHandle SimComm::post(int dst, int tag, Message msg, std::size_t payload_bytes, Blocks blocks,
+                         bool bundle) {
   check_rank(dst, "send");
-  stats_.count_send(msg.payload.size(), msg.charged);
+  stats_.count_send(payload_bytes, msg.charged);
   if (stats_.log)
     stats_.log->sends.push_back(
         {dst, tag, msg.charged, message_hops(topology_, nodes_, rank_, dst), now()});
-  return std::make_unique<SimSendRequest>(delivery_, rank_,
-                                          delivery_.post(rank_, dst, tag, std::move(msg)), stats_);
+  return std::make_unique<SimSendRequest>(
+      delivery_, rank_, delivery_.post(rank_, dst, tag, std::move(msg), std::move(blocks), bundle),
+      stats_);
 }
 
-Message SimComm::recv_message(int src, int tag, int* from) {
+SendHandle SimComm::isend(int dst, int tag, Message msg) {
+  const std::size_t n = msg.payload.size();
+  return post(dst, tag, std::move(msg), n, {}, false);
+}
+
+// Counted as sent the bytes the packed form would have (what the MPI backend sends).
+SendHandle SimComm::isend_blocks(int dst, int tag, Blocks blocks) {
+  const std::size_t n = packed_blocks_size(blocks);
+  Message frame{{}, blocks_charged(blocks)};
+  return post(dst, tag, std::move(frame), n, std::move(blocks), true);
+}
+
+TransitPtr SimComm::take(int src, int tag, int* from) {
   if (src != kAnySource) check_rank(src, "recv");
   const double t0 = sg::Engine::get_clock();
   TransitPtr m = delivery_.receive(rank_, src, tag);
@@ -60,7 +74,20 @@ Message SimComm::recv_message(int src, int tag, int* from) {
     stats_.log->activity(Activity::Wait, t0, t1);
     stats_.log->recvs.push_back({m->src, m->tag, m->arrival, t1});
   }
+  return m;
+}
+
+// A message of blocks received as one payload is packed, as the MPI backend would have sent it.
+Message SimComm::recv_message(int src, int tag, int* from) {
+  TransitPtr m = take(src, tag, from);
+  if (m->bundle) return pack_blocks(m->blocks);
   return {std::move(m->data), m->charged};
+}
+
+Blocks SimComm::recv_blocks(int src, int tag, int* from) {
+  TransitPtr m = take(src, tag, from);
+  if (m->bundle) return std::move(m->blocks);
+  return unpack_blocks({std::move(m->data), m->charged});
 }
 
 } // namespace zc

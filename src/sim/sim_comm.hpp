@@ -22,10 +22,19 @@ public:
   using Comm::send;
   SendHandle isend(int dst, int tag, Message m) override;
   Message recv_message(int src, int tag, int* from) override;
+  // The blocks travel as they are: their payloads are shared, not packed (nor copied).
+  SendHandle isend_blocks(int dst, int tag, Blocks blocks) override;
+  void send_blocks(int dst, int tag, Blocks blocks) override {
+    isend_blocks(dst, tag, std::move(blocks))->wait();
+  }
+  Blocks recv_blocks(int src, int tag, int* from) override;
   double now() const override { return simgrid::s4u::Engine::get_clock(); }
 
 private:
   void check_rank(int r, const char* what) const;
+  SendHandle post(int dst, int tag, Message m, std::size_t payload_bytes, Blocks blocks,
+                  bool bundle);
+  TransitPtr take(int src, int tag, int* from);
 
   int rank_, nodes_;
   Topology topology_;

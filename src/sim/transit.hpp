@@ -1,6 +1,6 @@
 #pragma once
-// A message on its way through the simulated machine: the payload, the size it is charged, and
-// when it is fully received.
+// A message on its way through the simulated machine: the payload (or the blocks) it shares with
+// its sender, the size it is charged, and when it is fully received.
 #include <cstddef>
 #include <limits>
 #include <memory>
@@ -15,7 +15,9 @@ constexpr double kNotYet = std::numeric_limits<double>::infinity();
 
 struct Transit {
   int src, dst, tag;
-  Bytes data;
+  Payload data;
+  Blocks blocks;       // a message of several blocks (Comm::isend_blocks), their payloads shared
+  bool bundle = false; // whether it is one
   std::size_t charged = 0; // the bytes the network is charged (comm.hpp)
   double sent_at = 0;
   double arrival = kNotYet; // virtual time of full reception, kNotYet while contention decides it

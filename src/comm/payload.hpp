@@ -1,0 +1,70 @@
+#pragma once
+// A message's payload: an immutable byte buffer shared by the sender, the network and every
+// receiver. All the simulated nodes live in one host process, so passing a message on, or the same
+// block to many nodes (a broadcast, a multi-broadcast), shares one buffer by reference count
+// instead of copying it per hop and per receiver. The modelled machine still holds a copy on each
+// node: its memory is charged by the node programs (NodeContext::alloc), never by the host's.
+//
+// Made from a Bytes (implicitly, so `Message{pack(v), n}` reads as before); read as a const Bytes
+// (implicitly too); take() gives the bytes back as a Bytes of one's own, moved when this is the
+// only holder, copied otherwise.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <stdexcept>
+#include <type_traits>
+#include <vector>
+
+namespace zc {
+
+using Bytes = std::vector<std::uint8_t>;
+
+class Payload {
+public:
+  Payload() = default;
+  Payload(Bytes b); // NOLINT(google-explicit-constructor): a payload is made from its bytes
+
+  const Bytes& bytes() const { return buf_ ? *buf_ : none(); }
+  operator const Bytes&() const& { return bytes(); } // NOLINT(google-explicit-constructor)
+  // The bytes as a vector of one's own: moved out when no one else holds them, else copied.
+  Bytes take() && {
+    if (!buf_) return {};
+    Bytes b = buf_.use_count() == 1 ? std::move(*buf_) : *buf_;
+    buf_.reset();
+    return b;
+  }
+
+  std::size_t size() const { return buf_ ? buf_->size() : 0; }
+  bool empty() const { return size() == 0; }
+  const std::uint8_t* data() const { return bytes().data(); }
+  Bytes::const_iterator begin() const { return bytes().begin(); }
+  Bytes::const_iterator end() const { return bytes().end(); }
+  std::uint8_t operator[](std::size_t i) const { return bytes()[i]; }
+  std::uint8_t at(std::size_t i) const { return bytes().at(i); }
+  // The payload read in place as an array of records (wire.hpp's pack wrote them): no copy.
+  template <class T> std::span<const T> records() const {
+    static_assert(std::is_trivially_copyable_v<T>);
+    if (size() % sizeof(T) != 0) throw std::runtime_error("payload size is not a record multiple");
+    if (reinterpret_cast<std::uintptr_t>(data()) % alignof(T) != 0)
+      throw std::runtime_error("payload not aligned for its records");
+    return {reinterpret_cast<const T*>(data()), size() / sizeof(T)};
+  }
+  // How many payloads share these bytes (0 when empty).
+  long holders() const { return buf_.use_count(); }
+  bool shares(const Payload& o) const { return buf_ && buf_ == o.buf_; }
+
+  friend bool operator==(const Payload& a, const Payload& b) {
+    return a.buf_ == b.buf_ || a.bytes() == b.bytes();
+  }
+  friend bool operator==(const Payload& a, const Bytes& b) { return a.bytes() == b; }
+
+private:
+  static const Bytes& none() {
+    static const Bytes empty;
+    return empty;
+  }
+  std::shared_ptr<Bytes> buf_; // never written through once made
+};
+
+} // namespace zc
