@@ -467,7 +467,8 @@ def compositing(d, sub="compositing"):
     m = rows(os.path.join(d, sub, "merging.csv"))
     if not m:
         return
-    cube = [r for r in m if r["topology"] == "cube" and r["size"] == "400"]
+    cube = [r for r in m if r["topology"] == "cube" and r["size"] == "400"
+            and r.get("scene", "2pot") == "2pot"]
     machines = list(dict.fromkeys(r["machine"] for r in cube))
     shown = ("pair-rs", "aapc-hbp", "binary-swap", "direct-send", "best radix-k")
     colors = palette(set(shown))
@@ -497,20 +498,32 @@ def compositing(d, sub="compositing"):
                  fontsize=11)
     figure_legend(fig, colors, ideal=False, loc="lower center", ncol=len(shown))
     save(fig, os.path.join(d, sub, "merging.png"))
-    b = rows(os.path.join(d, sub, "best.csv"))
-    fig, ax = plt.subplots(figsize=(6, 4.4))
-    for i, mach in enumerate(dict.fromkeys(r["machine"] for r in b)):
-        sel = [r for r in b if r["machine"] == mach and r["topology"] == "cube"
-               and r["size"] == "400" and r["best_k"]]
-        ax.plot([number(r["nodes"]) for r in sel], [number(r["best_k"]) for r in sel],
-                marker="o", color="C%d" % i, label=mach)
-    ax.set_xscale("log", base=2)
-    ax.set_yscale("log", base=2)
-    ax.set_xlabel("nodes P")
-    ax.set_ylabel("fastest radix k (2: binary swap, P: direct send)")
-    ax.set_title("The best k per machine, 2 POT, 400x400")
-    ax.legend()
-    save(fig, os.path.join(d, sub, "best_k.png"))
+    compositing_best_k(rows(os.path.join(d, sub, "best.csv")), os.path.join(d, sub, "best_k.png"))
+
+
+def compositing_best_k(b, out):
+    """The fastest radix k against P, one panel per machine (400x400, cube), one line a scene."""
+    cube = [r for r in b if r["topology"] == "cube" and r["size"] == "400" and r["best_k"]]
+    machines = list(dict.fromkeys(r["machine"] for r in cube))
+    scenes = sorted({r["scene"] for r in cube}, key=natural_key)
+    colors = palette(set(scenes))
+    fig, axes = plt.subplots(1, len(machines), figsize=(4.4 * len(machines), 4.4), squeeze=False,
+                             sharey=True)
+    for ax, mach in zip(axes[0], machines):
+        g = defaultdict(list)
+        for r in cube:
+            if r["machine"] == mach:
+                g[r["scene"]].append(r)
+        curves(ax, g, "nodes", "best_k", colors, logy=True, dodge=0.04)
+        ps = sorted({number(r["nodes"]) for r in cube})
+        ax.set_xticks(ps)
+        ax.set_xticklabels([str(int(x)) for x in ps])
+        ax.set_title(f"{mach}, 400x400")
+        ax.set_xlabel("nodes P")
+    axes[0][0].set_ylabel("fastest radix k (2: binary swap, P: direct send)")
+    fig.suptitle("The best k per machine and scene (Kurç et al.'s scenes)", fontsize=11)
+    figure_legend(fig, colors, ideal=False, loc="lower center", ncol=len(scenes))
+    save(fig, out)
 
 
 def run_label(run):
