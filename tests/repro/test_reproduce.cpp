@@ -1,0 +1,123 @@
+// repro/reproduce: committed results are never degraded and are current for a subset of points.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <set>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "csv.hpp"
+#include "machine/cpu_model.hpp"
+#include "machine/machine.hpp"
+#include "repro/paper_figures.hpp"
+#include "repro/regress.hpp"
+#include "repro/reproduce.hpp"
+#include "repro/simulate.hpp"
+#include "repro/sweep.hpp"
+#include "util/error.hpp"
+#include "util/nnls.hpp"
+
+using namespace zc;
+
+namespace {
+
+const std::string kRoot = ZCUBE_SOURCE_DIR;
+
+using test::read_csv;
+
+} // namespace
+
+// The default `zcube reproduce` keeps the committed --full Blazek tables and writes beside them.
+TEST(Reproduce, NeverDegradesTheFullBlazekTables) {
+  const auto dir = std::filesystem::temp_directory_path() / "zcube-test-keep";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "blazek");
+  // What `zcube reproduce blazek --full` writes: rows up to 2048 spheres.
+  std::ofstream(dir / "blazek/speedup.csv")
+      << "method,spheres,nodes,virtual_s,speedup,efficiency\n"
+         "node-initiated,64,32,1.5,20,0.6\nnode-initiated,2048,32,30,28,0.9\n";
+  ReproduceOptions o;
+  o.root = kRoot;
+  o.out = dir.string();
+  std::string note;
+  EXPECT_EQ(plan_directory(o, blazek_plan(o), &note), o.out + "/blazek-quick");
+  EXPECT_NE(note.find("--full"), std::string::npos) << note;
+  o.full = true;
+  EXPECT_EQ(plan_directory(o, blazek_plan(o), &note), o.out + "/blazek");
+  o.full = false;
+  o.overwrite = true;
+  EXPECT_EQ(plan_directory(o, blazek_plan(o), &note), o.out + "/blazek");
+  o.overwrite = false;
+  EXPECT_EQ(plan_directory(o, kurc_plan(o), &note), o.out + "/kurc");
+  // Tables of the default grid are simply rewritten.
+  std::ofstream(dir / "blazek/speedup.csv")
+      << "method,spheres,nodes,virtual_s,speedup,efficiency\nnode-initiated,64,32,1.5,20,0.6\n";
+  EXPECT_EQ(plan_directory(o, blazek_plan(o), &note), o.out + "/blazek");
+  std::filesystem::remove_all(dir);
+}
+
+// The committed results/ are a real run of `zcube reproduce`: a few points re-simulated now give
+// the committed numbers (to their printed precision).
+TEST(Reproduce, CommittedResultsAreCurrentForASubset) {
+  ReproduceOptions o;
+  o.root = kRoot;
+  const auto kurc = kurc_plan(o), charles = charles_plan(o), blazek = blazek_plan(o);
+  auto pick = [](const PaperPlan& p, const std::string& key) {
+    for (const auto& pt : p.points)
+      if (pt.key == key) return pt.cfg;
+    ADD_FAILURE() << "no point " << key;
+    return SimConfig{};
+  };
+  const std::vector<SimConfig> cfgs = {
+      pick(kurc, "t2/16/1pot/pair-rs"), pick(charles, "el/teapot/256/cube/4"),
+      pick(charles, "seq/teapot/256"), pick(blazek, "node-initiated/4/4")};
+  const auto r = simulate_batch(cfgs, 2);
+  for (const auto& rep : r)
+    ASSERT_EQ(rep["status"], "ok") << rep.dump();
+  // Equal to the committed figure within its printed precision.
+  auto near = [](const std::string& committed, double now, double rel, double abs,
+                 const std::string& what) {
+    EXPECT_LE(std::fabs(std::stod(committed) - now), std::max(abs, rel * std::fabs(now)))
+        << what << ": committed " << committed << ", now " << now;
+  };
+  int found = 0;
+  for (const auto& row : read_csv(kRoot + "/results/kurc/table2.csv"))
+    if (row.at("nodes") == "16" && row.at("scene") == "1pot" && row.at("scheme") == "pair-rs")
+      for (const auto& p : r[0]["phases"])
+        if (p["name"] == row.at("phase")) {
+          near(row.at("predicted_ms"), p["max_s"].get<double>() * 1e3, 0, 0.0501,
+               "kurc " + row.at("phase"));
+          ++found;
+        }
+  for (const auto& row : read_csv(kRoot + "/results/charles/speedup.csv"))
+    if (row.at("scene") == "teapot" && row.at("size") == "256" && row.at("topology") == "cube" &&
+        row.at("nodes") == "4") {
+      // reproduce divides the paper's timed region (virtual_s: timed_s when the run has one).
+      near(row.at("virtual_s"), virtual_s(r[1]), 6e-6, 0, "charles virtual_s");
+      near(row.at("speedup"), virtual_s(r[2]) / virtual_s(r[1]), 6e-4, 0, "charles speedup");
+      ++found;
+    }
+  // One meaning per column name: kurc's speed-ups are over the three phases of Table 2
+  // (render_s), which is not the whole run (virtual_s everywhere else).
+  for (const auto& row : read_csv(kRoot + "/results/kurc/speedup.csv"))
+    if (row.at("scheme") == "pair-rs" && row.at("scene") == "1pot" && row.at("size") == "400" &&
+        row.at("nodes") == "16") {
+      EXPECT_FALSE(row.count("virtual_s"));
+      double three = 0;
+      for (const auto& p : r[0]["phases"])
+        for (const auto& k : kurc_phases())
+          if (p["name"] == k) three += p["max_s"].get<double>();
+      near(row.at("render_s"), three, 6e-6, 0, "kurc render_s");
+      EXPECT_LT(three, r[0]["virtual_time_s"].get<double>() * 0.999);
+      ++found;
+    }
+  for (const auto& row : read_csv(kRoot + "/results/blazek/speedup.csv"))
+    if (row.at("method") == "node-initiated" && row.at("spheres") == "4" &&
+        row.at("nodes") == "4") {
+      near(row.at("virtual_s"), virtual_s(r[3]), 6e-6, 0, "blazek virtual_s");
+      ++found;
+    }
+  EXPECT_EQ(found, 6);
+}

@@ -1,0 +1,146 @@
+// sim: a message's virtual time against its closed form for every size, distance, machine and
+// fidelity, and contention by fidelity.
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <numeric>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <simgrid/s4u.hpp>
+
+#include "comm/collectives.hpp"
+#include "comm/wire.hpp"
+#include "machine/machine.hpp"
+#include "machine/platform_xml.hpp"
+#include "machine/topology.hpp"
+#include "machine/units.hpp"
+#include "sim_fixtures.hpp"
+#include "util/error.hpp"
+
+using namespace zc;
+using namespace zc::test;
+
+namespace {
+
+// One-way times of a ping-pong from node 0, indexed by (bytes, hops).
+std::map<std::pair<double, int>, double> one_way(const SimConfig& base, const std::string& to,
+                                                 const std::string& sizes) {
+  SimConfig c = base;
+  c.algorithm = "pingpong";
+  c.options.values = {{"from", "0"}, {"to", to}, {"sizes", sizes}};
+  auto r = run_simulation_isolated(c);
+  EXPECT_EQ(r["status"], "ok") << r.dump();
+  std::map<std::pair<double, int>, double> t;
+  for (const auto& x : r["results"])
+    t[{x["bytes"].get<double>(), x["hops"].get<int>()}] = x["one_way_s"].get<double>();
+  return t;
+}
+
+} // namespace
+namespace {
+
+// One simulation per message size, so every measurement is taken while the virtual clock is
+// still small (a difference of clock readings near 1 s cannot resolve 1e-12 of 75 us).
+nlohmann::json pingpong(const std::string& m, int P, Fidelity f, Topology t = Topology::Cube,
+                        Overrides o = {}, const std::string& to = "1,3,7,15") {
+  nlohmann::json all = {{"status", "ok"}, {"results", nlohmann::json::array()}};
+  for (const char* size : {"0B", "1B", "64B", "100B", "101B", "1024B", "65536B"}) {
+    SimConfig c = sim_config(m, P, t, f);
+    c.algorithm = "pingpong";
+    c.overrides = o;
+    c.options.values = {{"from", "0"}, {"to", to}, {"sizes", size}};
+    auto r = run_simulation_isolated(c);
+    if (r["status"] != "ok") return r;
+    for (auto& x : r["results"])
+      all["results"].push_back(x);
+  }
+  return all;
+}
+
+} // namespace
+
+TEST(PointToPoint, DcmCostGrowsByItsPerHopTermVolvoxByWholeSteps) {
+  // iPSC/2: circuit switching, so a hop adds only the DCM's per-hop set-up (docs/machines.md), the
+  // same for short and long messages.
+  auto dcm = one_way(sim_config("ipsc2", 32, Topology::Cube, Fidelity::Circuit), "1,3,7,15,31",
+                     "64B,4096B");
+  const double per_hop = machine_spec("ipsc2").net.per_hop_s;
+  ASSERT_GT(per_hop, 0);
+  for (double m : {64.0, 4096.0})
+    for (int h = 2; h <= 5; ++h)
+      expect_rel(dcm.at({m, h}), dcm.at({m, 1}) + (h - 1) * per_hop, 1e-12,
+                 "ipsc2, " + std::to_string(h) + " hops");
+  // Volvox: every hop is a whole store-and-forward step.
+  auto t800 = one_way(sim_config("volvox", 32, Topology::Cube, Fidelity::Circuit), "1,3,7,15,31",
+                      "64B,4096B");
+  for (double m : {64.0, 4096.0})
+    for (int h = 2; h <= 5; ++h)
+      expect_rel(t800.at({m, h}), h * t800.at({m, 1}), 1e-12, "volvox");
+}
+
+TEST(PointToPoint, EqualsTheFormulaForEverySizeDistanceMachineAndFidelity) {
+  for (const std::string m : {"ipsc2", "ipsc860", "volvox"})
+    for (Fidelity f : {Fidelity::Analytic, Fidelity::Flow, Fidelity::Circuit}) {
+      auto r = pingpong(m, 16, f);
+      ASSERT_EQ(r["status"], "ok") << r.dump();
+      const NetworkParams& net = machine_spec(m).net;
+      ASSERT_EQ(r["results"].size(), 4u * 7u); // 1, 2, 3 and 4 hops
+      for (const auto& x : r["results"])
+        expect_rel(x["one_way_s"].get<double>(),
+                   net.message_time(x["bytes"].get<double>(), x["hops"].get<int>()), 1e-12,
+                   m + " " + fidelity_name(f) + " " + x.dump());
+    }
+}
+
+TEST(PointToPoint, RingDistancesAndZeroLatency) {
+  auto r = pingpong("volvox", 8, Fidelity::Circuit, Topology::Ring, {}, "1,2,3,4,5");
+  ASSERT_EQ(r["status"], "ok") << r.dump();
+  ASSERT_FALSE(r["results"].empty()) << r.dump();
+  const NetworkParams& net = machine_spec("volvox").net;
+  for (const auto& x : r["results"])
+    expect_rel(x["one_way_s"].get<double>(),
+               net.message_time(x["bytes"].get<double>(), x["hops"].get<int>()), 1e-12, x.dump());
+  Overrides o;
+  o.latency_s = 0;
+  auto z = pingpong("ipsc2", 4, Fidelity::Flow, Topology::Cube, o, "1,3");
+  ASSERT_EQ(z["status"], "ok") << z.dump();
+  ASSERT_FALSE(z["results"].empty()) << z.dump();
+  // No start-up left: the bytes at the channel rate and the DCM's per-hop set-up.
+  const double per_hop = machine_spec("ipsc2").net.per_hop_s;
+  for (const auto& x : z["results"])
+    expect_rel(x["one_way_s"].get<double>(),
+               x["bytes"].get<double>() / 2.8e6 + (x["hops"].get<int>() - 1) * per_hop, 1e-12,
+               x.dump());
+}
+
+TEST(PointToPoint, SharedChannelSlowsFlowAndCircuitNotAnalytic) {
+  // 4-node cube: 0 -> 3 goes 0-1-3, 1 -> 3 goes 1-3: both need channel (1,3).
+  const double m = 65536;
+  auto run = [&](Fidelity f, bool both) {
+    return run_custom(sim_config("ipsc2", 4, Topology::Cube, f),
+                      [=](NodeContext& ctx) {
+                        Comm& c = ctx.comm();
+                        if (c.rank() == 0) c.send(3, 0, Bytes(std::size_t(m)));
+                        if (c.rank() == 1 && both) c.send(3, 0, Bytes(std::size_t(m)));
+                        if (c.rank() == 3) {
+                          c.recv(0, 0);
+                          if (both) c.recv(1, 0);
+                        }
+                      })["virtual_time_s"]
+        .get<double>();
+  };
+  const double alone = machine_spec("ipsc2").net.message_time(m, 2);
+  for (Fidelity f : {Fidelity::Analytic, Fidelity::Flow, Fidelity::Circuit}) {
+    expect_rel(run(f, false), alone, 1e-12, fidelity_name(f));
+    if (f == Fidelity::Analytic)
+      expect_rel(run(f, true), alone, 1e-12, "analytic, shared");
+    else
+      EXPECT_GT(run(f, true), alone * 1.5) << fidelity_name(f);
+  }
+}
