@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """Simulator scaling: host wall time, peak RSS and simulated messages per second of
 `zcube run` against the node count P = 1..1024 for elastic, aapc-hbp and node-initiated, one
-simulation at a time, and the issue's goals as ratios measured in the same session. Writes
+simulation at a time, and the scaling goals as ratios measured in the same session. Writes
 results/scaling/sim_scaling.csv, goals.csv and sim_scaling.png (log-log, with an O(events)
 reference line of slope 1).
 
@@ -59,7 +59,7 @@ def run(zcube, algo, scene, size, extra, nodes):
 
 
 def goals(binaries, repeat):
-    """The issue's goals for each binary, each measurement alternating between the binaries (the
+    """The scaling goals for each binary, each measurement alternating between the binaries (the
     same load for all) and the least disturbed of `repeat` runs kept (a third as many for the
     1024-node runs)."""
     g = {z: {} for z in binaries}

@@ -80,7 +80,7 @@ TEST(Units, SameAsSimGridsParserForEveryUnit) {
   EXPECT_GT(compared, 1000);
 }
 
-TEST(Units, TheIssuesExamples) {
+TEST(Units, KBpsRefusedTBpsAndDaysAcceptedAsBySimGrid) {
   // SimGrid refuses KBps and accepts TBps and d: so does zcube.
   EXPECT_THROW(zc::parse_bandwidth("1KBps", "--bandwidth"), zc::UsageError);
   EXPECT_EQ(zc::parse_bandwidth("1TBps", "--bandwidth"), 1e12);
