@@ -58,6 +58,7 @@ static const std::vector<std::string> kPhases = {"broadcast",
                                                  "request_vertices",
                                                  "scatter_triangles",
                                                  "scatter_vertices",
+                                                 "share",
                                                  "span_list_creation",
                                                  "zbuffer"};
 
