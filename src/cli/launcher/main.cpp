@@ -1,0 +1,30 @@
+// The zcube command's first step: it answers `zcube run --list` from the algorithm registry alone,
+// and becomes zcube-full (execv: same process, arguments, exit status and signals) for anything
+// else. zcube-full links SimGrid, whose ns-3 libraries alone cost the dynamic loader about 25 ms of
+// CPU at every start (relocations of some 40 libraries): most of a listing's time, and a
+// simulation's first milliseconds, which a listing does not need.
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <iostream>
+#include <system_error>
+
+#include "algo/algorithm.hpp"
+
+int main(int argc, char** argv) {
+  if (argc == 3 && std::strcmp(argv[1], "run") == 0 && std::strcmp(argv[2], "--list") == 0) {
+    for (const auto& a : zc::algorithms()) // as cmd_run.cpp lists them
+      std::cout << a.name << "  " << a.summary << "\n";
+    return 0;
+  }
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path dir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+  if (ec) dir = fs::path(argv[0]).parent_path();
+  const std::string full = (dir / "zcube-full").string();
+  execv(full.c_str(), argv);
+  std::cerr << "zcube: error: cannot start " << full << ": " << std::strerror(errno) << "\n";
+  return 1;
+}
