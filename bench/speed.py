@@ -98,6 +98,26 @@ def load():
     return os.getloadavg()[0]
 
 
+def goal_rows(rows):
+    """The 1024-node elastic run over the render of the same scene (the goal: at most 5x), from
+    the medians of both binaries' runs."""
+    med = {(r["case"], r["figure"]): r for r in rows}
+    out = []
+    for fig in ("wall_s", "cpu_s"):
+        e = med.get(("elastic 1024 nodes bone 512x512", fig))
+        r = med.get(("render bone 512x512", fig))
+        if not e or not r:
+            continue
+        row = {"case": "elastic 1024 nodes over render (bone 512x512)", "figure": fig, "runs": "",
+               "median": e["median"] / r["median"], "min": "", "max": ""}
+        if "before_median" in e and "before_median" in r:
+            row["before_median"] = e["before_median"] / r["before_median"]
+            row["ratio_median"] = row["median"] / row["before_median"]
+        out.append(row)
+        print(row, flush=True)
+    return out
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--zcube", default="build/zcube")
@@ -131,6 +151,7 @@ def main():
                                 "ratio_median": statistics.median(ratios) if ratios else ""})
                 rows.append(row)
                 print(row, flush=True)
+        rows += goal_rows(rows)
         if "bench" not in skip and os.path.exists(a.bench):
             exes = [a.bench] + ([a.before_bench] if a.before_bench else [])
             tables = {e: [] for e in exes}
