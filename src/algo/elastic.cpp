@@ -98,6 +98,10 @@ multiscatter_triangles(NodeContext& ctx, const LocalScene& local,
     gathered += send[k].charged;
   }
   ctx.charge_packing(gathered);
+  Counters gathered_records; // selected and written field by field (their bytes: above)
+  for (int k = 0; k < P; ++k)
+    gathered_records.records_packed += picked[k].size();
+  ctx.charge(gathered_records);
   std::vector<Bytes> got;
   for (auto& m : coll::alltoallv(ctx.comm(), std::move(send)))
     got.push_back(std::move(m.payload).take());
@@ -111,6 +115,9 @@ multiscatter_triangles(NodeContext& ctx, const LocalScene& local,
       slice.push_back(Vertices::from_wire(t, in.get_bytes(Vertices::kExtraWireBytes)));
     }
   }
+  Counters read_records; // each received record read back field by field
+  read_records.records_packed = slice.size();
+  ctx.charge(read_records);
   ctx.alloc(double(slice.size() * charged_record), "slice triangles");
   return slice;
 }

@@ -15,6 +15,7 @@ void draw_span(Framebuffer& full, const NodeRenderer& nr, const NodeSpans& spans
                const SpanRecord& sp, int y, Counters& w) {
   const ScreenTriangle& t = spans.batch.tris[sp.tri];
   const RowShader rs(t, spans.batch, nr.shade(), y);
+  ++w.span_starts;
   for (int x = sp.x0; x <= sp.x1; ++x) {
     const std::size_t i = full.index(x, y);
     const float z = rs.depth(x);

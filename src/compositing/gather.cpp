@@ -8,6 +8,7 @@ Message pack_pixels(const ActivePixels& mine, Message (*charge)(Bytes, const Pix
                     const PixelRecords& records, Counters& w) {
   Message part = charge(serialize_sparse(mine), records);
   w.bytes_packed += part.payload.size();
+  w.records_packed += mine.count(); // pixel by pixel, field by field
   return part;
 }
 
@@ -18,8 +19,10 @@ std::vector<Message> gather(Comm& c, int root, Message part) {
 void paste(const std::vector<Message>& parts, Framebuffer& picture, int height, Counters& w) {
   for (const auto& m : parts) {
     const Bytes& b = m.payload;
-    scatter_active(deserialize_sparse(b.data(), b.size(), picture.width(), 0, height), picture);
+    const ActivePixels got = deserialize_sparse(b.data(), b.size(), picture.width(), 0, height);
+    scatter_active(got, picture);
     w.bytes_packed += 2 * b.size();
+    w.records_packed += 2 * got.count(); // each pixel read from its record, then written
   }
 }
 

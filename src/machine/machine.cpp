@@ -43,12 +43,12 @@ const std::vector<CostGroup>& cost_groups() {
       {"geometry",
        {"vertices_transformed", "triangles_in", "triangles_culled", "triangles_clipped",
         "triangles_setup", "triangles_estimated", "triangles_tessellated"}},
-      {"spans", {"spans", "rows_scanned"}},
+      {"spans", {"spans", "rows_scanned", "edge_walks", "span_starts", "sort_steps"}},
       {"pixels",
        {"pixels_generated", "pixels_tested", "pixels_written", "pixels_final", "texels_fetched"}},
       {"clear", {"pixels_cleared"}},
       {"merge", {"merge_ops"}},
-      {"packing", {"bytes_packed"}},
+      {"packing", {"bytes_packed", "records_packed"}},
       {"list_merge", {"list_merges"}},
       {"scanline", {"wpa_tested", "wpa_appended"}}};
   return g;

@@ -26,8 +26,10 @@ SpanLists build_span_lists(const TriangleBatch& batch, int width, int height, Co
       L.spans[fill[y]++] = SpanRecord{x0, x1, i};
     });
   c.spans += L.spans.size();
+  c.edge_walks += 2 * batch.tris.size(); // two passes over every triangle's rows
   for (int y = 0; y < height; ++y) {
     auto b = L.spans.begin() + L.row_begin[y], e = L.spans.begin() + L.row_begin[y + 1];
+    c.sort_steps += sort_steps(std::uint64_t(e - b));
     std::stable_sort(b, e, [&](const SpanRecord& p, const SpanRecord& q) {
       if (p.x0 != q.x0) return p.x0 < q.x0;
       return batch.tris[p.tri].id < batch.tris[q.tri].id;
@@ -52,6 +54,7 @@ ActivePixels zbuffer_spans(const SpanLists& L, const TriangleBatch& batch, const
       const SpanRecord& sp = L.spans[s];
       const ScreenTriangle& t = batch.tris[sp.tri];
       const RowShader rs(t, batch, ctx, y);
+      ++c.span_starts;
       c.pixels_generated += std::uint64_t(sp.x1 - sp.x0 + 1);
       // First segment: columns already produced on this scanline (contiguous, since spans come
       // sorted by x_min): depth comparisons.

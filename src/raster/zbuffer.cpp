@@ -169,6 +169,8 @@ void draw_untextured(const ScreenTriangle& t, const ShadeContext& ctx, const Row
     generated += std::uint64_t(x1 - x0 + 1);
   });
   c.spans += spans;
+  c.span_starts += spans; // each span's start values from its planes
+  ++c.edge_walks;
   c.pixels_generated += generated;
   c.pixels_tested += generated;
   c.pixels_written += written;
@@ -183,8 +185,10 @@ void draw_triangle(const ScreenTriangle& t, const TriangleBatch& batch, const Sh
     draw_untextured(t, ctx, rows, fb, c, newly_covered);
     return;
   }
+  ++c.edge_walks;
   for_each_span(t, rows, fb.width(), [&](int y, int x0, int x1) {
     ++c.spans;
+    ++c.span_starts;
     const RowShader rs(t, batch, ctx, y);
     std::size_t i = fb.index(x0, y);
     auto& depth = fb.depth();

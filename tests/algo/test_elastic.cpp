@@ -74,6 +74,11 @@ TEST(Elastic, SlicesBalanceTheEstimatedLoadAndDuplicateCrossingTriangles) {
   EXPECT_GT(e["duplicated_triangles"].get<std::int64_t>(), 0); // Table 1: 4238 > 3572
   EXPECT_EQ(e["triangles_rendered"].get<std::int64_t>(),
             3751 + e["duplicated_triangles"].get<std::int64_t>());
+  // MultiScatter writes every record it sends field by field and reads every one it receives.
+  std::uint64_t records = 0;
+  for (const auto& n : r["per_node"])
+    records += n["phase_work"]["multiscatter_triangles"].value("records_packed", std::uint64_t(0));
+  EXPECT_EQ(records, 2 * e["triangles_rendered"].get<std::uint64_t>());
 }
 
 TEST(Elastic, RequestMovesFewerBytesThanBroadcastOnTheBone) {

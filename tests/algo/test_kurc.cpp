@@ -128,6 +128,18 @@ TEST(Kurc, EachSchemeCountsTheLoopsItRuns) {
     EXPECT_EQ(l.wpa_tested + l.wpa_appended, l.pixels_generated) << s;
     EXPECT_GT(l.wpa_appended, l.wpa_tested) << s;
   }
+  // Every listed span is started once by the z-buffer that draws it, each list sorted (a merge
+  // sort's n ceil(log2 n) steps), and node 0 unpacks and pastes every final pixel record.
+  for (const char* s : {"zbuf-exc", "pair-rs", "aapc-rs"}) {
+    const Counters sl = work(r[s], "span_list_creation"), lz = work(r[s], "local_zbuffer"),
+                   out = work(r[s], "output");
+    EXPECT_EQ(lz.span_starts, sl.spans) << s;
+    EXPECT_EQ(sl.span_starts, 0u) << s;
+    EXPECT_EQ(sl.edge_walks, 2 * sl.triangles_setup) << s;
+    EXPECT_GT(sl.sort_steps, 0u) << s;
+    EXPECT_LE(sl.sort_steps, sl.spans * 64) << s;
+    EXPECT_EQ(out.records_packed, 3 * r[s]["kurc"]["tpf"].get<std::uint64_t>()) << s;
+  }
   const Counters pm = work(r["pair-rs"], "pixel_merging"), am = work(r["aapc-rs"], "pixel_merging");
   EXPECT_GT(pm.list_merges, 0u);
   EXPECT_EQ(pm.merge_ops, 0u);
