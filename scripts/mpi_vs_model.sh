@@ -5,7 +5,8 @@
 #   2. predict: every workload simulated on that platform, before anything is measured;
 #   3. measure: every workload run RUNS times on the MPI backend (P = 1, 2, and 4 oversubscribed);
 #   4. compare: medians of the measured runs, their spread, phase by phase (scripts/mpi_compare.py).
-# Nothing of the measured runs enters the prediction. About 5 minutes on 2 idle cores.
+# Nothing of the measured runs enters the prediction. About 8 minutes on 2 idle cores (elapsed_s in
+# conditions.txt); on a machine others load, run it later (the load average is recorded).
 # usage: scripts/mpi_vs_model.sh [zcube=build/zcube] [out=results/mpi]
 #   RUNS=5 (runs per point), QUICK=1 (small workloads, one run each: tests/mpi),
 #   ZCUBE_MPI_CLOCK=cpu (time phases on the processes' CPU time, on a machine others load)
@@ -44,6 +45,7 @@ start=$(date +%s)
   echo "clock=${ZCUBE_MPI_CLOCK:-wall}"
   echo "runs=$runs"
   echo "load_before=$(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "mpi_yield_when_idle=1"
 } >"$out/conditions.txt"
 
 # 1. The probe (two ranks: the network needs a peer; the CPU loops run on both and are averaged).
@@ -60,7 +62,10 @@ for w in "${workloads[@]}"; do
   done
 done
 
-# 3. Measured runs (P + 1 processes for a method with a host computer).
+# 3. Measured runs (P + 1 processes for a method with a host computer). A rank waiting for a message
+# yields its core (OpenMPI's mpi_yield_when_idle) instead of spinning on it: with more processes
+# than cores, a spinning rank takes the core its partner needs to send that message.
+export OMPI_MCA_mpi_yield_when_idle=1
 echo "workload,nodes,processes,run,phase,seconds" >"$out/measured.csv"
 for w in "${workloads[@]}"; do
   IFS='|' read -r name host args <<<"$w"

@@ -8,6 +8,7 @@
 #include <cstring>
 
 #include "algo/elastic_partition.hpp"
+#include "compositing/gather.hpp"
 #include "raster/active_pixels.hpp"
 #include "raster/renderer.hpp"
 #include "raster/zbuffer.hpp"
@@ -75,8 +76,12 @@ const std::vector<CostGroup>& probe_groups() {
       {"clear", {"pixels_cleared"}},
       {"merge", {"merge_ops"}},
       {"packing", {"bytes_packed"}},
-      {"list_merge", {"list_merges"}},               // timed by the active merge
-      {"scanline", {"wpa_tested", "wpa_appended"}}}; // timed by the active z-buffer
+      {"list_merge", {"list_merges"}},                // timed by the active merge
+      {"scanline", {"wpa_tested", "wpa_appended"}},  // timed by the active z-buffer
+      {"edges", {"edge_walks"}},                     // timed by the z-buffers and span lists
+      {"span_start", {"span_starts"}},               // timed by the z-buffers
+      {"sort", {"sort_steps"}},                      // timed by the span lists
+      {"records", {"records_packed"}}};              // timed by the sparse packing
   return g;
 }
 
@@ -191,6 +196,18 @@ void render_loops(Fit& f, const std::string& path, int size) {
             [&] {
               cp = Counters{};
               cp.bytes_packed = serialize_sparse(wpa).size();
+              cp.records_packed = wpa.count();
+            },
+            f.min_s));
+  // The picture pasted from them (Kurc et al.'s output on node 0: compositing::paste).
+  const std::vector<Message> parts{uncharged(serialize_sparse(wpa))};
+  Framebuffer picture = nr.make_framebuffer(RowSet::all(size));
+  Counters cu;
+  f.add("sparse paste " + name, cu,
+        time_loop(
+            [&] {
+              cu = Counters{};
+              compositing::paste(parts, picture, size, cu);
             },
             f.min_s));
 }
@@ -251,6 +268,9 @@ CostTable measure_cpu(const std::string& root, double min_seconds, nlohmann::jso
   render_loops(f, root + "/scenes/teapot.json", 1024);
   render_loops(f, root + "/scenes/teapot.json", 3072);
   render_loops(f, root + "/scenes/newell_teapot.json", 2048);
+  // A dense mesh (78,738 triangles: long span lists, few pixels a span), at two sizes.
+  render_loops(f, root + "/scenes/bone.json", 1024);
+  render_loops(f, root + "/scenes/bone.json", 4096);
   buffer_loops(f, 2048, 2048);
   buffer_loops(f, 4096, 4096);
   tessellation_loop(f, root + "/scenes/blazek/thesis_spheres_16.json");
