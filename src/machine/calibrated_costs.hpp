@@ -8,11 +8,11 @@ inline constexpr bool kFitted = true;
 // supports: results/calibration/selection.csv).
 inline constexpr const char* kFixedGroups = "packing,spans,scanline,clear";
 inline constexpr double kGroupScale[] = {
-    1.2384375272884987 /* geometry */,
+    1.320787028706451 /* geometry */,
     1 /* spans */,
-    1.9755836341942243 /* pixels */,
+    1.649885874853264 /* pixels */,
     1 /* clear */,
-    1.563878732671323 /* merge */,
+    1.5680663706146993 /* merge */,
     1 /* packing */,
     2 /* list_merge */,
     1 /* scanline */};
