@@ -145,8 +145,13 @@ Counters render_into(const Scene& scene, int threads, Framebuffer& image, Render
             continue;
           }
           const BandBins& bin = scratch.bins[k];
-          for (std::uint32_t j = bin.start[band]; j < bin.start[band + 1]; ++j)
-            draw_triangle(b.tris[bin.idx[j]], b, nr.shade(), rows, image, tc[w], &covered[w]);
+          for (std::uint32_t j = bin.start[band]; j < bin.start[band + 1]; ++j) {
+            const ScreenTriangle& t = b.tris[bin.idx[j]];
+            draw_triangle(t, b, nr.shade(), rows, image, tc[w], &covered[w]);
+            // The bands are host threads, not the modelled program: a triangle's edges are set
+            // up once, in its first band, whatever the thread count.
+            if (band != t.ymin / band_h) --tc[w].edge_walks;
+          }
         }
       }
     });
