@@ -26,23 +26,6 @@ using namespace zc::test;
 
 namespace {
 
-// One-way times of a ping-pong from node 0, indexed by (bytes, hops).
-std::map<std::pair<double, int>, double> one_way(const SimConfig& base, const std::string& to,
-                                                 const std::string& sizes) {
-  SimConfig c = base;
-  c.algorithm = "pingpong";
-  c.options.values = {{"from", "0"}, {"to", to}, {"sizes", sizes}};
-  auto r = run_simulation_isolated(c);
-  EXPECT_EQ(r["status"], "ok") << r.dump();
-  std::map<std::pair<double, int>, double> t;
-  for (const auto& x : r["results"])
-    t[{x["bytes"].get<double>(), x["hops"].get<int>()}] = x["one_way_s"].get<double>();
-  return t;
-}
-
-} // namespace
-namespace {
-
 // The platform text of a built-in machine with `from` replaced by `to`, written to a file.
 std::string edited_platform(const std::string& machine, int P, Topology topo,
                             const std::vector<std::pair<std::string, std::string>>& edits) {

@@ -28,23 +28,6 @@ using namespace zc::test;
 
 namespace {
 
-// One-way times of a ping-pong from node 0, indexed by (bytes, hops).
-std::map<std::pair<double, int>, double> one_way(const SimConfig& base, const std::string& to,
-                                                 const std::string& sizes) {
-  SimConfig c = base;
-  c.algorithm = "pingpong";
-  c.options.values = {{"from", "0"}, {"to", to}, {"sizes", sizes}};
-  auto r = run_simulation_isolated(c);
-  EXPECT_EQ(r["status"], "ok") << r.dump();
-  std::map<std::pair<double, int>, double> t;
-  for (const auto& x : r["results"])
-    t[{x["bytes"].get<double>(), x["hops"].get<int>()}] = x["one_way_s"].get<double>();
-  return t;
-}
-
-} // namespace
-namespace {
-
 // One simulation per message size, so every measurement is taken while the virtual clock is
 // still small (a difference of clock readings near 1 s cannot resolve 1e-12 of 75 us).
 nlohmann::json pingpong(const std::string& m, int P, Fidelity f, Topology t = Topology::Cube,

@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <map>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 #include <memory>
@@ -43,6 +45,20 @@ inline nlohmann::json run_custom(SimConfig cfg, std::function<void(NodeContext&)
 inline double vtime(const nlohmann::json& r) {
   EXPECT_EQ(r["status"], "ok") << r.dump();
   return r["virtual_time_s"].get<double>();
+}
+
+// One-way times of a ping-pong from node 0, indexed by (bytes, hops).
+inline std::map<std::pair<double, int>, double>
+one_way(const SimConfig& base, const std::string& to, const std::string& sizes) {
+  SimConfig c = base;
+  c.algorithm = "pingpong";
+  c.options.values = {{"from", "0"}, {"to", to}, {"sizes", sizes}};
+  auto r = run_simulation_isolated(c);
+  EXPECT_EQ(r["status"], "ok") << r.dump();
+  std::map<std::pair<double, int>, double> t;
+  for (const auto& x : r["results"])
+    t[{x["bytes"].get<double>(), x["hops"].get<int>()}] = x["one_way_s"].get<double>();
+  return t;
 }
 
 } // namespace zc::test
