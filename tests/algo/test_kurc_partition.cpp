@@ -6,22 +6,11 @@
 
 #include "algo/elastic_partition.hpp"
 #include "algo/kurc_partition.hpp"
+#include "row_loads.hpp"
 #include "util/load_imbalance.hpp"
 
 using namespace zc;
-
-namespace {
-std::vector<std::uint64_t> bumpy_rows(int h, std::uint64_t seed) {
-  std::vector<std::uint64_t> r(h);
-  std::uint64_t s = seed;
-  for (int y = 0; y < h; ++y) {
-    s = s * 6364136223846793005ULL + 1442695040888963407ULL;
-    const double bump = (y > h / 4 && y < h / 2) ? 300 : 20;
-    r[y] = std::uint64_t(bump * double(s >> 40) / double(1 << 24));
-  }
-  return r;
-}
-} // namespace
+using zc::test::bumpy_rows;
 
 TEST(MergePartition, EvenSplitFollowsTheCubeDimensions) {
   auto o = even_split(16, 4);
