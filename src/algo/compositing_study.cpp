@@ -4,6 +4,8 @@
 // (docs/compositing.md, "The study"); `zcube run --algorithm aapc-hbp --nodes 1024` runs one.
 #include "algo/compositing_study.hpp"
 
+#include <bit>
+
 #include "algo/composite.hpp"
 #include "algo/kurc_merge_scheme.hpp"
 #include "algo/kurc_partition.hpp"
@@ -30,13 +32,9 @@ struct Contender {
   const ScreenPartition* share = &kHeuristicBinPacking;
 };
 
-bool power_of_two(int n) {
-  return (n & (n - 1)) == 0;
-}
-
 std::vector<Contender> contenders(int P) {
   std::vector<Contender> v;
-  if (power_of_two(P)) {
+  if (std::has_single_bit(unsigned(P))) {
     v.push_back({"pair-rs", compositing::binary_swap(), false, &kRecursiveSubdivision});
     v.push_back({"binary-swap", compositing::binary_swap()});
   } else {
@@ -47,7 +45,8 @@ std::vector<Contender> contenders(int P) {
     v.push_back({"direct-send", compositing::direct_send()});
   }
   for (int k = 2; k < P; ++k) {
-    if (P % k != 0 || (k == 2 && power_of_two(P))) continue; // radix-2 of 2^d: binary swap
+    if (P % k != 0 || (k == 2 && std::has_single_bit(unsigned(P))))
+      continue; // radix-2 of 2^d: binary swap
     const auto rounds = compositing::radix_rounds(P, {k});
     if (*std::max_element(rounds.begin(), rounds.end()) > largest_round(P)) continue;
     v.push_back({"radix-" + std::to_string(k), compositing::radix_k({k})});

@@ -3,6 +3,8 @@
 // ZBUF-EXC): log2 P stages; at stage i a node keeps the rows whose owner agrees with it on bit i,
 // sends the others to its neighbour over channel i and merges what arrives (two x-sorted lists
 // into one). The nodes must be a power of two (folding.cpp composites any number).
+#include <bit>
+
 #include "compositing/group.hpp"
 #include "compositing/strategy.hpp"
 
@@ -41,8 +43,9 @@ Strategy binary_swap() {
   s.name = "binary-swap";
   s.summary = "log2 P pairwise exchanges of half the rows held (Kurc et al.'s PAIR)";
   s.refuses = [](int nodes) {
-    return (nodes & (nodes - 1)) == 0 ? std::string()
-                                      : "binary swap needs a power of two nodes (folding does not)";
+    return std::has_single_bit(unsigned(nodes))
+               ? std::string()
+               : "binary swap needs a power of two nodes (folding does not)";
   };
   s.owners = [](int nodes) { return nodes; };
   s.composite = composite;

@@ -1,21 +1,18 @@
 #include "compositing/group.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <stdexcept>
 
 namespace zc::compositing {
 
 namespace {
 
-bool power_of_two(int n) {
-  return n > 0 && (n & (n - 1)) == 0;
-}
-
 // True when member g = member 0 XOR (the world bits of g's bits), each group bit one world bit.
 bool is_subcube(const std::vector<int>& m) {
-  if (!power_of_two(int(m.size()))) return false;
+  if (!std::has_single_bit(m.size())) return false;
   for (std::size_t b = 1; b < m.size(); b <<= 1)
-    if (!power_of_two(m[b] ^ m[0])) return false;
+    if (!std::has_single_bit(unsigned(m[b] ^ m[0]))) return false;
   for (std::size_t g = 0; g < m.size(); ++g) {
     int w = m[0];
     for (std::size_t b = 1; b < m.size(); b <<= 1)
