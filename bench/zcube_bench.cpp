@@ -3,8 +3,10 @@
 // 3840x2160, on one thread and on every core, side by side with Mesa's llvmpipe drawing the same
 // triangles (same world-space positions and view-projection matrix, same size, depth test LESS,
 // same culling) with LP_NUM_THREADS = 1 and the core count, when the GL harness is built.
-//   usage: zcube_bench [--quick] [--no-gl] [--scene teapot|bone|bunny] [--min-seconds S]
-// Every case repeats until at least S seconds (default 0.3) and reports the median frame time.
+//   usage: zcube_bench [--quick] [--no-gl] [--scene teapot|bone|bunny] [--size WxH]
+//                      [--threads N] [--min-seconds S] [--frames F]
+// Every case repeats until at least S seconds (default 0.3) and reports the median frame time;
+// --frames F draws exactly F timed frames instead (repeatable instruction counts for a profiler).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -31,12 +33,12 @@ double now_s() {
 
 // Median time of one frame. Frames go into one reused frame buffer (render_scene_into: what
 // render_scene does, minus allocating a new image each time), as llvmpipe reuses its FBO.
-double median_render(const Scene& s, int threads, double min_s, Counters& counters) {
+double median_render(const Scene& s, int threads, double min_s, int frames, Counters& counters) {
   Framebuffer fb;
   counters = render_scene_into(s, threads, fb); // warm-up, sizes the frame buffer
   std::vector<double> t;
   const double start = now_s();
-  while (t.size() < 3 || now_s() - start < min_s) {
+  while (frames > 0 ? int(t.size()) < frames : (t.size() < 3 || now_s() - start < min_s)) {
     const double t0 = now_s();
     counters = render_scene_into(s, threads, fb);
     t.push_back(now_s() - t0);
@@ -87,6 +89,7 @@ bench::GlScene gl_scene(const Scene& s) {
 int main(int argc, char** argv) {
   bool quick = false, gl = true;
   double min_s = 0.3;
+  int frames = 0, only_threads = 0, only_w = 0, only_h = 0;
   std::string only;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -98,9 +101,16 @@ int main(int argc, char** argv) {
       only = argv[++i];
     else if (a == "--min-seconds" && i + 1 < argc)
       min_s = std::atof(argv[++i]);
+    else if (a == "--frames" && i + 1 < argc)
+      frames = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--threads" && i + 1 < argc)
+      only_threads = std::max(1, std::atoi(argv[++i]));
+    else if (a == "--size" && i + 1 < argc &&
+             std::sscanf(argv[i + 1], "%dx%d", &only_w, &only_h) == 2 && only_w > 0 && only_h > 0)
+      ++i;
     else {
       std::fprintf(stderr, "usage: zcube_bench [--quick] [--no-gl] [--scene teapot|bone|bunny] "
-                           "[--min-seconds S]\n");
+                           "[--size WxH] [--threads N] [--min-seconds S] [--frames F]\n");
       return 2;
     }
   }
@@ -120,8 +130,10 @@ int main(int argc, char** argv) {
       {"bunny", root + "/scenes/bunny.json"}};
   std::vector<std::pair<int, int>> sizes = {{512, 512}, {3840, 2160}};
   if (quick) sizes.resize(1);
+  if (only_w > 0) sizes = {{only_w, only_h}};
   std::vector<int> thread_counts = {1};
   if (cores > 1) thread_counts.push_back(cores);
+  if (only_threads > 0) thread_counts = {only_threads};
 
   std::printf("%-7s %-10s %3s %10s %10s %10s %10s %7s %7s %8s\n", "scene", "size", "thr",
               "zc Mtri/s", "zc Mpix/s", "lp Mtri/s", "lp Mpix/s", "tri x", "pix x", "lp/zc px");
@@ -139,7 +151,7 @@ int main(int argc, char** argv) {
       const double tris = double(s.triangles.size());
       for (int threads : thread_counts) {
         Counters c;
-        const double t = median_render(s, threads, min_s, c);
+        const double t = median_render(s, threads, min_s, frames, c);
         const double px = double(c.pixels_generated);
         std::printf("%-7s %4dx%-5d %3d %10.3f %10.2f", name.c_str(), w, h, threads, tris / t / 1e6,
                     px / t / 1e6);
