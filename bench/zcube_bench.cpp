@@ -4,11 +4,13 @@
 // triangles (same world-space positions and view-projection matrix, same size, depth test LESS,
 // same culling) with LP_NUM_THREADS = 1 and the core count, when the GL harness is built.
 //   usage: zcube_bench [--quick] [--no-gl] [--scene teapot|bone|bunny] [--size WxH]
-//                      [--threads N] [--min-seconds S] [--frames F]
+//                      [--threads N] [--min-seconds S] [--frames F] [--digest]
 // Every case repeats until at least S seconds (default 0.3) and reports the median frame time;
-// --frames F draws exactly F timed frames instead (repeatable instruction counts for a profiler).
+// --frames F draws exactly F timed frames instead (repeatable instruction counts for a profiler);
+// --digest prints a hash of each case's colours, depths, ids and counters (renderers compared).
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -33,7 +35,22 @@ double now_s() {
 
 // Median time of one frame. Frames go into one reused frame buffer (render_scene_into: what
 // render_scene does, minus allocating a new image each time), as llvmpipe reuses its FBO.
-double median_render(const Scene& s, int threads, double min_s, int frames, Counters& counters) {
+// FNV-1a over bytes: a digest to compare two renderers' outputs, not a cryptographic hash.
+std::uint64_t fnv1a(const void* p, std::size_t n, std::uint64_t h = 14695981039346656037ull) {
+  for (std::size_t i = 0; i < n; ++i)
+    h = (h ^ static_cast<const unsigned char*>(p)[i]) * 1099511628211ull;
+  return h;
+}
+
+std::uint64_t digest(const Framebuffer& fb, const Counters& c) {
+  std::uint64_t h = fnv1a(fb.rgb().data(), fb.rgb().size());
+  h = fnv1a(fb.depth().data(), fb.depth().size() * sizeof(float), h);
+  h = fnv1a(fb.ids().data(), fb.ids().size() * sizeof(std::uint32_t), h);
+  return fnv1a(&c, sizeof c, h);
+}
+
+double median_render(const Scene& s, int threads, double min_s, int frames, Counters& counters,
+                     std::uint64_t* hash) {
   Framebuffer fb;
   counters = render_scene_into(s, threads, fb); // warm-up, sizes the frame buffer
   std::vector<double> t;
@@ -44,6 +61,7 @@ double median_render(const Scene& s, int threads, double min_s, int frames, Coun
     t.push_back(now_s() - t0);
   }
   std::nth_element(t.begin(), t.begin() + long(t.size() / 2), t.end());
+  if (hash) *hash = digest(fb, counters);
   return t[t.size() / 2];
 }
 
@@ -87,7 +105,7 @@ bench::GlScene gl_scene(const Scene& s) {
 } // namespace
 
 int main(int argc, char** argv) {
-  bool quick = false, gl = true;
+  bool quick = false, gl = true, want_digest = false;
   double min_s = 0.3;
   int frames = 0, only_threads = 0, only_w = 0, only_h = 0;
   std::string only;
@@ -97,6 +115,8 @@ int main(int argc, char** argv) {
       quick = true;
     else if (a == "--no-gl")
       gl = false;
+    else if (a == "--digest")
+      want_digest = true;
     else if (a == "--scene" && i + 1 < argc)
       only = argv[++i];
     else if (a == "--min-seconds" && i + 1 < argc)
@@ -110,7 +130,8 @@ int main(int argc, char** argv) {
       ++i;
     else {
       std::fprintf(stderr, "usage: zcube_bench [--quick] [--no-gl] [--scene teapot|bone|bunny] "
-                           "[--size WxH] [--threads N] [--min-seconds S] [--frames F]\n");
+                           "[--size WxH] [--threads N] [--min-seconds S] [--frames F] "
+                           "[--digest]\n");
       return 2;
     }
   }
@@ -151,10 +172,12 @@ int main(int argc, char** argv) {
       const double tris = double(s.triangles.size());
       for (int threads : thread_counts) {
         Counters c;
-        const double t = median_render(s, threads, min_s, frames, c);
+        std::uint64_t hash = 0;
+        const double t = median_render(s, threads, min_s, frames, c, want_digest ? &hash : nullptr);
         const double px = double(c.pixels_generated);
         std::printf("%-7s %4dx%-5d %3d %10.3f %10.2f", name.c_str(), w, h, threads, tris / t / 1e6,
                     px / t / 1e6);
+        if (want_digest) std::printf(" digest %016llx", static_cast<unsigned long long>(hash));
 #ifdef ZCUBE_GL_HARNESS
         if (gl) {
           const bench::GlResult g = bench::gl_time_frame(gs, threads, min_s);
