@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <thread>
 
+#include "raster/worker_pool.hpp"
 #include "raster/zbuffer.hpp"
 #include "util/block_split.hpp"
 
@@ -28,32 +28,34 @@ void NodeRenderer::setup_projected(std::uint32_t id, const Triangle& tri,
 
 namespace {
 
-// Runs f(worker) on `n` workers (the calling thread is worker 0) and joins them.
-template <class F> void run_workers(int n, F&& f) {
-  std::vector<std::thread> ts;
-  for (int w = 1; w < n; ++w)
-    ts.emplace_back([&f, w] { f(w); });
-  f(0);
-  for (auto& t : ts)
-    t.join();
-}
-
 // A worker's screen triangles by band of rows: band k's are idx[start[k] .. start[k + 1]), in the
 // order they were set up (so every pixel sees its triangles in scene order, as on one thread).
 struct BandBins {
   std::vector<std::uint32_t> start, idx;
+  std::vector<std::uint32_t> first, last; // each triangle's first and last band, noted at set-up
 
-  void fill(const TriangleBatch& b, int band_h, int bands) {
+  void clear() {
+    first.clear();
+    last.clear();
+  }
+  // Notes the bands of the triangles set up since the last call (read while still in cache).
+  void note(const TriangleBatch& b, int band_h) {
+    for (std::size_t i = first.size(); i < b.tris.size(); ++i) {
+      first.push_back(std::uint32_t(b.tris[i].ymin / band_h));
+      last.push_back(std::uint32_t(b.tris[i].ymax / band_h));
+    }
+  }
+  void fill(int bands) {
     start.assign(std::size_t(bands) + 1, 0);
-    for (const auto& t : b.tris)
-      for (int k = t.ymin / band_h; k <= t.ymax / band_h; ++k)
+    for (std::size_t i = 0; i < first.size(); ++i)
+      for (std::uint32_t k = first[i]; k <= last[i]; ++k)
         ++start[k + 1];
     for (int k = 0; k < bands; ++k)
       start[k + 1] += start[k];
     idx.resize(start[bands]);
     std::vector<std::uint32_t> at(start.begin(), start.end() - 1);
-    for (std::uint32_t i = 0; i < b.tris.size(); ++i)
-      for (int k = b.tris[i].ymin / band_h; k <= b.tris[i].ymax / band_h; ++k)
+    for (std::uint32_t i = 0; i < first.size(); ++i)
+      for (std::uint32_t k = first[i]; k <= last[i]; ++k)
         idx[at[k]++] = i;
   }
 };
@@ -85,6 +87,25 @@ Counters render_scene_into(const Scene& scene, int threads, Framebuffer& image) 
 
 namespace {
 
+// Rows per band. A band's colours, depths and ids (11 bytes a pixel) fit a core's L2 cache with
+// room for its triangles, so the band is cleared and then drawn while it stays in cache: at
+// 3840x2160 a frame buffer drawn triangle by triangle in one pass (91 MB) misses the L2 on every
+// span. Several threads take bands in turn, at least 8 bands a thread for balance.
+int band_rows(int width, int height, int threads) {
+  constexpr std::size_t kBandBytes = std::size_t(1) << 19;
+  const std::size_t row_bytes = std::size_t(std::max(1, width)) * Framebuffer::kLocationBytes;
+  int h = int(std::max<std::size_t>(4, kBandBytes / row_bytes));
+  if (threads > 1) h = std::min(h, std::max(4, height / (threads * 8)));
+  return std::max(1, std::min(h, height));
+}
+
+// One worker's counters and covered pixels, a cache line of its own (no false sharing between
+// threads that bump them once a triangle).
+struct alignas(64) WorkerTally {
+  Counters c;
+  std::uint64_t covered = 0; // pixels written first by some triangle (TPF without a scan)
+};
+
 Counters render_into(const Scene& scene, int threads, Framebuffer& image, RenderScratch& scratch) {
   threads = std::max(1, threads);
   const NodeRenderer nr(scene);
@@ -98,41 +119,52 @@ Counters render_into(const Scene& scene, int threads, Framebuffer& image, Render
     image.clear(scene.background);
     clear_bands = false;
   }
-  std::vector<Counters> tc(threads);
-  // Pixels written first by some triangle, per thread: the covered pixels (TPF) without a scan.
-  std::vector<std::uint64_t> covered(threads, 0);
+  std::vector<WorkerTally> tally(threads);
 
   // 1. Vertex stage, contiguous chunks per thread.
   std::vector<ProjectedVertex>& pv = scratch.pv;
   pv.resize(scene.vertices.size());
-  run_workers(threads, [&](int w) {
+  run_on_workers(threads, [&](int w) {
     const BlockRange mine = block_range(pv.size(), threads, w);
     for (std::size_t i = mine.begin; i < mine.end; ++i)
-      pv[i] = nr.project(scene.vertices[i], tc[w]);
+      pv[i] = nr.project(scene.vertices[i], tally[w].c);
   });
 
   // 2. Triangles in chunks: set-up split by triangle ranges, each worker's triangles binned by
   // band, rasterisation split by row bands.
   const glm::vec2* uvs = scene.uvs_if_textured();
-  const int band_h =
-      threads == 1 ? std::max(1, scene.height) : std::max(4, scene.height / (threads * 8));
+  const int band_h = band_rows(scene.width, scene.height, threads);
   const int bands = (scene.height + band_h - 1) / band_h;
-  constexpr std::size_t kChunk = 1 << 16;
+  // One thread on a small frame buffer (a few L2 caches' worth) sets up and draws a small chunk
+  // at a time, so its screen triangles (about 200 bytes each) are drawn while still in cache and
+  // the frame buffer, revisited by every chunk, mostly stays there too. A large frame buffer, or
+  // several threads (two synchronisations a chunk), take large chunks: each chunk visits the
+  // bands again.
+  const std::size_t fb_bytes =
+      std::size_t(scene.width) * std::size_t(scene.height) * Framebuffer::kLocationBytes;
+  const std::size_t chunk =
+      threads == 1 && fb_bytes <= (std::size_t(4) << 20) ? 2048 : std::size_t(1) << 17;
   std::vector<TriangleBatch>& batches = scratch.batches;
   batches.resize(threads);
   scratch.bins.resize(threads);
-  for (std::size_t c0 = 0; c0 < scene.triangles.size(); c0 += kChunk) {
-    const std::size_t c1 = std::min(scene.triangles.size(), c0 + kChunk);
-    run_workers(threads, [&](int w) {
+  for (std::size_t c0 = 0; c0 < scene.triangles.size(); c0 += chunk) {
+    const std::size_t c1 = std::min(scene.triangles.size(), c0 + chunk);
+    run_on_workers(threads, [&](int w) {
       TriangleBatch& b = batches[w];
+      BandBins& bin = scratch.bins[w];
       b.clear();
+      bin.clear();
       const BlockRange mine = block_range(c1 - c0, threads, w);
-      for (std::size_t i = c0 + mine.begin; i < c0 + mine.end; ++i)
-        nr.setup(std::uint32_t(i), scene.triangles[i], pv.data(), uvs, b, tc[w]);
-      if (bands > 1) scratch.bins[w].fill(b, band_h, bands);
+      for (std::size_t i = c0 + mine.begin; i < c0 + mine.end; ++i) {
+        nr.setup(std::uint32_t(i), scene.triangles[i], pv.data(), uvs, b, tally[w].c);
+        if (bands > 1) bin.note(b, band_h);
+      }
+      if (bands > 1) bin.fill(bands);
     });
     std::atomic<int> next{0};
-    run_workers(threads, [&](int w) {
+    run_on_workers(threads, [&](int w) {
+      Counters& c = tally[w].c;
+      std::uint64_t* covered = &tally[w].covered;
       for (int band; (band = next.fetch_add(1)) < bands;) {
         const RowSet rows =
             RowSet::band(band * band_h, std::min(scene.height, (band + 1) * band_h));
@@ -141,28 +173,28 @@ Counters render_into(const Scene& scene, int threads, Framebuffer& image, Render
           const TriangleBatch& b = batches[k];
           if (bands == 1) {
             for (const auto& t : b.tris)
-              draw_triangle(t, b, nr.shade(), rows, image, tc[w], &covered[w]);
+              draw_triangle(t, b, nr.shade(), rows, image, c, covered);
             continue;
           }
           const BandBins& bin = scratch.bins[k];
           for (std::uint32_t j = bin.start[band]; j < bin.start[band + 1]; ++j) {
             const ScreenTriangle& t = b.tris[bin.idx[j]];
-            draw_triangle(t, b, nr.shade(), rows, image, tc[w], &covered[w]);
-            // The bands are host threads, not the modelled program: a triangle's edges are set
-            // up once, in its first band, whatever the thread count.
-            if (band != t.ymin / band_h) --tc[w].edge_walks;
+            draw_triangle(t, b, nr.shade(), rows, image, c, covered);
+            // Bands are a host-side tiling, not the modelled program: a triangle's edges are set
+            // up once, in its first band, whatever the band height and the thread count.
+            if (band != t.ymin / band_h) --c.edge_walks;
           }
         }
       }
     });
   }
   Counters total;
-  for (const auto& c : tc)
-    total += c;
+  for (const auto& t : tally)
+    total += t.c;
   total.pixels_cleared = std::uint64_t(scene.width) * scene.height;
   total.pixels_final = 0;
-  for (std::uint64_t n : covered)
-    total.pixels_final += n;
+  for (const auto& t : tally)
+    total.pixels_final += t.covered;
   return total;
 }
 

@@ -1,6 +1,7 @@
 // Reference renderer: fill rule, clipping, depth tie-break, thread independence, counters.
 #include <algorithm>
 #include <set>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -244,6 +245,66 @@ TEST(Raster, ImageAndCountersIndependentOfThreadCount) {
     EXPECT_EQ(image_sha256(r.image), h) << t << " threads";
     EXPECT_EQ(r.counters, ref.counters) << t << " threads";
   }
+}
+
+namespace {
+
+Scene spheres(int w, int h) {
+  Scene s = base_scene(w, h);
+  Rng rng{11};
+  for (int k = 0; k < 12; ++k)
+    add_sphere(s,
+               {float(rng.uniform() * 4 - 2), float(rng.uniform() * 3 - 1.5),
+                float(rng.uniform() * 2 - 1)},
+               float(0.3 + rng.uniform() * 0.6), 3);
+  return s;
+}
+
+} // namespace
+
+TEST(Raster, BandsAndChunksDrawWhatOnePassDraws) {
+  // The renderer draws in row bands sized to the cache and in chunks of triangles (small ones on
+  // a small frame buffer): the same pixels as every triangle drawn over the whole buffer in scene
+  // order, frame after frame into a reused buffer.
+  for (auto [w, h] : {std::pair{600, 300}, std::pair{1400, 400}}) {
+    const Scene s = spheres(w, h);
+    const NodeRenderer nr(s);
+    Counters c;
+    std::vector<ProjectedVertex> pv;
+    for (const auto& v : s.vertices)
+      pv.push_back(nr.project(v, c));
+    TriangleBatch b;
+    for (std::size_t i = 0; i < s.triangles.size(); ++i)
+      nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, b, c);
+    ASSERT_GT(b.tris.size(), 4096u); // several chunks
+    Framebuffer one_pass = nr.make_framebuffer(RowSet::all(h));
+    draw_batch(b, nr.shade(), one_pass, c);
+    Framebuffer fb;
+    for (int frame = 0; frame < 2; ++frame) {
+      const Counters r = render_scene_into(s, 1, fb);
+      EXPECT_EQ(fb.rgb(), one_pass.rgb()) << w << "x" << h << " frame " << frame;
+      EXPECT_EQ(fb.depth(), one_pass.depth()) << w << "x" << h;
+      EXPECT_EQ(fb.ids(), one_pass.ids()) << w << "x" << h;
+      EXPECT_EQ(r.edge_walks, c.edge_walks);
+      EXPECT_EQ(r.spans, c.spans);
+      EXPECT_EQ(r.pixels_generated, c.pixels_generated);
+      EXPECT_EQ(r.pixels_written, c.pixels_written);
+      EXPECT_EQ(r.pixels_final, one_pass.covered());
+    }
+  }
+}
+
+TEST(Raster, ConcurrentRendersShareNoThreads) {
+  // Two host threads rendering at once: one uses the renderer's thread pool, the other threads of
+  // its own; both images are the sequential one.
+  const Scene s = spheres(200, 150);
+  const std::string h = image_sha256(render_scene(s, 1).image);
+  std::string a, b;
+  std::thread other([&] { b = image_sha256(render_scene(s, 3).image); });
+  a = image_sha256(render_scene(s, 2).image);
+  other.join();
+  EXPECT_EQ(a, h);
+  EXPECT_EQ(b, h);
 }
 
 TEST(Raster, RowSubsetsReproduceTheFullImage) {

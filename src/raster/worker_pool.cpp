@@ -1,0 +1,83 @@
+#include "raster/worker_pool.hpp"
+
+#include <atomic>
+#include <cstdint>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace zc {
+
+namespace {
+
+// Every pool thread takes part in every run (those beyond n only acknowledge it), so a run is one
+// generation number up and one countdown to zero: no thread can miss a run or join the next early.
+class WorkerPool {
+public:
+  ~WorkerPool() {
+    const std::lock_guard<std::mutex> lock(run_mutex_);
+    stop_ = true;
+    generation_.fetch_add(1);
+    generation_.notify_all();
+    for (auto& t : threads_)
+      t.join();
+  }
+
+  // False when another thread is running the pool.
+  bool try_run(int n, const std::function<void(int)>& f) {
+    const std::unique_lock<std::mutex> lock(run_mutex_, std::try_to_lock);
+    if (!lock.owns_lock()) return false;
+    while (int(threads_.size()) < n - 1) {
+      const int w = int(threads_.size()) + 1;
+      threads_.emplace_back([this, w, seen = generation_.load()] { serve(w, seen); });
+    }
+    job_ = &f;
+    n_ = n;
+    pending_.store(int(threads_.size()));
+    generation_.fetch_add(1);
+    generation_.notify_all();
+    f(0);
+    for (int left; (left = pending_.load()) != 0;)
+      pending_.wait(left);
+    job_ = nullptr;
+    return true;
+  }
+
+private:
+  void serve(int w, std::uint32_t seen) {
+    for (;;) {
+      generation_.wait(seen);
+      seen = generation_.load();
+      if (stop_) return;
+      if (w < n_) (*job_)(w);
+      if (pending_.fetch_sub(1) == 1) pending_.notify_one();
+    }
+  }
+
+  std::mutex run_mutex_; // one run at a time
+  std::vector<std::thread> threads_;
+  std::atomic<std::uint32_t> generation_{0};
+  std::atomic<int> pending_{0};
+  const std::function<void(int)>* job_ = nullptr;
+  int n_ = 0;
+  bool stop_ = false;
+};
+
+} // namespace
+
+void run_on_workers(int n, const std::function<void(int)>& f) {
+  if (n <= 1) {
+    f(0);
+    return;
+  }
+  static WorkerPool pool;
+  if (pool.try_run(n, f)) return;
+  std::vector<std::thread> ts;
+  for (int w = 1; w < n; ++w)
+    ts.emplace_back([&f, w] { f(w); });
+  f(0);
+  for (auto& t : ts)
+    t.join();
+}
+
+} // namespace zc
