@@ -180,19 +180,27 @@ void parse_object(Scene& scene, const Ctx& cx, const json& j, std::size_t index)
   // One random stream per object entry: x, y, z (when placed) then the colour (when random).
   SplitMix64 g(mix_seed(seed, index));
   const glm::dvec3 base = spec.xf.translate;
-  for (long long c = 0; c < count; ++c) {
-    ObjectSpec copy = spec;
-    if (placed || count > 1)
-      copy.xf.translate =
-          base + glm::dvec3(g.coord(lo.x, hi.x), g.coord(lo.y, hi.y), g.coord(lo.z, hi.z));
-    glm::vec3 col = random_colour ? random_color(g) : color;
-    copy.color = col;
-    copy.material = has_color ? color_material(scene, col) : 0;
-    if (!has_color) copy.color = scene.materials[0].kd;
-    if (k == "mesh")
-      append_obj(scene, copy.file, copy.xf, copy.material, flip);
-    else
-      add_object(scene, copy);
+  try {
+    if (k != "mesh") // the budget, before the first copy is tessellated
+      check_triangle_budget(scene, std::uint64_t(count), triangle_count(spec),
+                            (count > 1 ? std::to_string(count) + " x " : "") + "this " + k);
+    for (long long c = 0; c < count; ++c) {
+      ObjectSpec copy = spec;
+      if (placed || count > 1)
+        copy.xf.translate =
+            base + glm::dvec3(g.coord(lo.x, hi.x), g.coord(lo.y, hi.y), g.coord(lo.z, hi.z));
+      glm::vec3 col = random_colour ? random_color(g) : color;
+      copy.color = col;
+      copy.material = has_color ? color_material(scene, col) : 0;
+      if (!has_color) copy.color = scene.materials[0].kd;
+      if (k == "mesh")
+        append_obj(scene, copy.file, copy.xf, copy.material, flip);
+      else
+        add_object(scene, copy);
+    }
+  } catch (const InputError& e) {
+    if (e.file() == "<object>") cx.fail(where, e.reason());
+    throw;
   }
 }
 

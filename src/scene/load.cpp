@@ -40,6 +40,7 @@ Scene load_scene(const std::string& path, const LoadOptions& opt) {
   check_input_file(path);
   Scene s;
   s.path = path;
+  s.triangle_budget = opt.max_triangles;
   const std::string ext = text::lower(std::filesystem::path(path).extension().string());
   const bool is_json = ext == ".json";
   if (is_json) {

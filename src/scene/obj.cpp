@@ -211,6 +211,12 @@ void append_obj(Scene& scene, const std::string& path, const ObjectTransform& xf
     off += nv;
   }
 
+  if (scene.triangles.size() + tris.size() > scene.triangle_budget)
+    throw InputError(path, 0,
+                     std::to_string(tris.size()) + " triangles would take the scene to " +
+                         std::to_string(scene.triangles.size() + tris.size()) +
+                         ", over its budget of " + std::to_string(scene.triangle_budget));
+
   // Area-weighted position normals for corners the file gives no normal.
   const std::size_t npos = obj.positions.size() / 3;
   auto pos = [&](int v) {

@@ -66,6 +66,12 @@ struct ObjectDesc {
 
 enum class CullMode { None, Back };
 
+// The most triangles a scene may hold unless the loader is told otherwise (LoadOptions): 2^26 =
+// 67,108,864, four times Blazek's largest workload (2048 spheres of 8192 triangles), about 2 GB of
+// vertices and triangles. Checked before an object is tessellated, so a scene that asks for more
+// fails at once, naming the object, instead of filling the host's memory.
+constexpr std::uint64_t kMaxSceneTriangles = std::uint64_t(1) << 26;
+
 struct Scene {
   std::string path; // where it was loaded from (for messages and reports)
   Camera camera;
@@ -83,6 +89,7 @@ struct Scene {
   std::vector<Material> materials{Material{}};
   std::vector<Texture> textures;
   std::vector<ObjectDesc> objects;
+  std::uint64_t triangle_budget = kMaxSceneTriangles; // set by the loader (LoadOptions)
 
   bool textured() const { return !textures.empty() && !uvs.empty(); }
   // The texture coordinates set-up reads (NodeRenderer::setup), nullptr when untextured.

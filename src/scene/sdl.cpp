@@ -230,6 +230,14 @@ void load_sdl_scene(Scene& scene, const std::string& path) {
         !spec.file.empty() && !bad.empty())
       p.fail(bad);
     SplitMix64 g(mix_seed(seed, std::uint64_t(ob.line)));
+    try { // the budget, before the first copy is tessellated
+      if (k != "mesh")
+        check_triangle_budget(scene, std::uint64_t(num), triangle_count(spec),
+                              (num > 1 ? std::to_string(num) + " x " : "") + "this " + k);
+    } catch (const InputError& e) {
+      if (e.file() == "<object>") p.fail(e.reason());
+      throw;
+    }
     for (long long c = 0; c < num; ++c) {
       ObjectSpec copy = spec;
       if (!has_pos) copy.xf.translate = {g.coord(-1, 1), g.coord(-1, 1), g.coord(-1, 1)};

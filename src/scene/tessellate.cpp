@@ -183,14 +183,35 @@ Tessellation tessellate(const ObjectDesc& d) {
   return tessellate(parse_object_text(d.text), d.first_vertex);
 }
 
+std::uint64_t triangle_count(const ObjectSpec& s) {
+  if (s.kind == "sphere" || s.kind == "spheroid") return std::uint64_t(8) << (2 * s.recursion);
+  if (s.kind == "cube") return 12;
+  if (s.kind == "cone") return 2 * std::uint64_t(s.slices);
+  if (s.kind == "cylinder") return 4 * std::uint64_t(s.slices);
+  if (s.kind == "bezier")
+    return read_bezier_file(s.file)->size() * 2 * std::uint64_t(s.level) * std::uint64_t(s.level);
+  bad("no triangle count for object kind '" + s.kind + "'");
+}
+
+void check_triangle_budget(const Scene& scene, std::uint64_t copies, std::uint64_t each,
+                           const std::string& what) {
+  const std::uint64_t have = scene.triangles.size(), room = scene.triangle_budget;
+  if (have <= room && (each == 0 || copies <= (room - have) / each)) return;
+  bad(what + " would take the scene to " + std::to_string(have) + " + " + std::to_string(copies) +
+      " x " + std::to_string(each) + " triangles, over its budget of " + std::to_string(room) +
+      (room == kMaxSceneTriangles ? " (zcube's limit)" : ""));
+}
+
 void add_object(Scene& scene, const ObjectSpec& spec) {
   ObjectDesc d;
   d.kind = spec.kind;
   d.text = object_text(spec);
+  const ObjectSpec parsed = parse_object_text(d.text);
+  check_triangle_budget(scene, 1, triangle_count(parsed), "this " + spec.kind);
   d.first_vertex = std::uint32_t(scene.vertices.size());
   d.first_triangle = std::uint32_t(scene.triangles.size());
   // Built from the text itself, so the description is exactly what was tessellated.
-  Tessellation t = tessellate(parse_object_text(d.text), d.first_vertex);
+  Tessellation t = tessellate(parsed, d.first_vertex);
   d.vertex_count = std::uint32_t(t.vertices.size());
   d.triangle_count = std::uint32_t(t.triangles.size());
   scene.vertices.insert(scene.vertices.end(), t.vertices.begin(), t.vertices.end());

@@ -57,7 +57,16 @@ Tessellation tessellate(const ObjectSpec& s, std::uint32_t first_vertex);
 // vertices [first_vertex, +vertex_count) and triangles [first_triangle, +triangle_count).
 Tessellation tessellate(const ObjectDesc& d);
 
-// Appends a primitive or Bezier object to the scene (through its text) and records its ObjectDesc.
+// How many triangles tessellate(s) yields, without tessellating (a Bezier object reads its file).
+std::uint64_t triangle_count(const ObjectSpec& s);
+
+// Throws InputError("<object>", 0, reason) when `copies` more objects of `each` triangles would
+// take the scene over its triangle budget.
+void check_triangle_budget(const Scene& scene, std::uint64_t copies, std::uint64_t each,
+                           const std::string& what);
+
+// Appends a primitive or Bezier object to the scene (through its text) and records its ObjectDesc;
+// checks the scene's triangle budget first.
 void add_object(Scene& scene, const ObjectSpec& s);
 
 // Index of a plain material of colour kd (reused when one already exists).

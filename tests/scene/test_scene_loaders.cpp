@@ -2,7 +2,9 @@
 // bit-identical re-tessellation from ObjectDesc, textures only where used, and every bad input.
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -276,6 +278,8 @@ INSTANTIATE_TEST_SUITE_P(
                       BadCase{"bad_recursion.sdl", 2, "recursion must be an integer in 0..9"},
                       BadCase{"bad_color.sdl", 2, "unknown colour 'octarine'"},
                       BadCase{"truncated.sdl", 2, "'scale' needs a value"},
+                      BadCase{"too_many_triangles.json", 0, "over its budget of 67108864"},
+                      BadCase{"too_many_triangles.sdl", 3, "40 x this sphere would take"},
                       BadCase{"bezier_index.teaset", 2, "control-point index 99 out of range"},
                       BadCase{"bezier_truncated.teaset", 3, "truncated file"}),
     [](const ::testing::TestParamInfo<BadCase>& i) {
@@ -311,4 +315,51 @@ TEST(SceneLoaders, ObjFacesGetTheMaterialTheirUsemtlNames) {
   EXPECT_EQ(s.triangles[2].material, 0u); // an unknown name falls back to the default
   EXPECT_EQ(s.triangles[3].material, 1u); // the first red
   EXPECT_EQ(s.vertices[s.triangles[3].v[0]].position, glm::vec3(0, 0, 0)); // -4 of 4 vertices
+}
+
+// The triangle budget is checked before tessellating: a closed form per primitive, the patch count
+// of a Bezier file, and an OBJ's faces before they join the scene.
+TEST(SceneLoaders, TriangleCountIsTheTessellationsWithoutTessellating) {
+  std::vector<zc::ObjectSpec> specs(6);
+  specs[0].recursion = 4;
+  specs[1].kind = "spheroid";
+  specs[1].recursion = 2;
+  specs[2].kind = "cube";
+  specs[3].kind = "cone";
+  specs[3].slices = 7;
+  specs[4].kind = "cylinder";
+  specs[4].slices = 9;
+  specs[5].kind = "bezier";
+  specs[5].file = src("scenes/teapot/teapot.bpt");
+  specs[5].level = 5;
+  for (const auto& s : specs)
+    EXPECT_EQ(zc::triangle_count(s), zc::tessellate(s, 0).triangles.size()) << s.kind;
+}
+
+TEST(SceneLoaders, TriangleBudgetRefusesTheObjectThatWouldExceedIt) {
+  zc::LoadOptions o;
+  o.max_triangles = 12 + 2 * 512; // the cube and two recursion-3 spheres, not a third
+  const std::string dir = ::testing::TempDir();
+  const std::string path = dir + "/budget.json";
+  std::ofstream(path) << R"({"objects": ["cube", {"type": "sphere", "recursion": 3},
+    {"type": "sphere", "recursion": 3}, {"type": "sphere", "recursion": 3}]})";
+  try {
+    zc::load_scene(path, o);
+    FAIL() << "a scene over its triangle budget loaded";
+  } catch (const zc::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("objects[3]: this sphere would take the scene to 1036 + "
+                                         "1 x 512 triangles, over its budget of 1036"),
+              std::string::npos)
+        << e.what();
+  }
+  o.max_triangles = 12 + 3 * 512;
+  EXPECT_EQ(zc::load_scene(path, o).triangles.size(), 12u + 3 * 512);
+  o.max_triangles = 1000;
+  try {
+    zc::load_scene(src("scenes/bunny/stanford-bunny.obj"), o);
+    FAIL() << "a mesh over the triangle budget loaded";
+  } catch (const zc::InputError& e) {
+    EXPECT_NE(e.file().find("stanford-bunny.obj"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("over its budget of 1000"), std::string::npos) << e.what();
+  }
 }

@@ -8,6 +8,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   static const std::string obj_path =
       zc::fuzz::write_input("in.obj", reinterpret_cast<const std::uint8_t*>(obj), sizeof obj - 1);
   zc::fuzz::write_input("in.mtl", data, size);
-  zc::fuzz::expect_input_error_or_success([&] { zc::load_scene(obj_path, {64, 64}); });
+  zc::fuzz::expect_input_error_or_success([&] {
+    zc::load_scene(obj_path, {64, 64, zc::fuzz::kTriangleBudget});
+  });
   return 0;
 }

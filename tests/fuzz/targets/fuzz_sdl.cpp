@@ -4,6 +4,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string path = zc::fuzz::write_input("in.sdl", data, size);
-  zc::fuzz::expect_input_error_or_success([&] { zc::load_scene(path, {64, 64}); });
+  zc::fuzz::expect_input_error_or_success([&] {
+    zc::load_scene(path, {64, 64, zc::fuzz::kTriangleBudget});
+  });
   return 0;
 }
