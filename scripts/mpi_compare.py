@@ -38,6 +38,13 @@ def pct(x):
     return "%+.1f %%" % (100 * x)
 
 
+def single_copy_text(mechanism):
+    if mechanism == "cma":
+        return "one copy, the receiver's (cross-memory attach)"
+    return ("fragments the sender pushes from inside its MPI calls (no cross-memory attach here: a "
+            "receiver waits for its sender's next MPI call)")
+
+
 def main():
     out, cores = sys.argv[1], int(sys.argv[2])
     runs, procs, order = load_measured(os.path.join(out, "measured.csv"))
@@ -119,7 +126,8 @@ def main():
 Written by `scripts/mpi_vs_model.sh` (one command; {cond.get('elapsed_s', '?')} s here) on
 {cond.get('host')} ({cond.get('cores')} cores, {cond.get('date')}); phases timed on the
 **{cond.get('clock')}** clock (`ZCUBE_MPI_CLOCK`); load average (1, 5, 15 min)
-{cond.get('load_before')} before, {cond.get('load_after')} after (other programs shared the cores). The method and what it shows: docs/machines.md, "Validation on a machine we can measure".
+{cond.get('load_before')} before, {cond.get('load_after')} after (other programs shared the cores); OpenMPI's
+shared-memory transport copied large messages by {single_copy_text(cond.get('single_copy', 'none'))}. The method and what it shows: docs/machines.md, "Validation on a machine we can measure".
 
 1. `mpirun -np 2 zcube probe` timed zcube's own loops and a ping-pong and wrote `cluster-P.xml`
    (`probe.json`: every loop, its counters, its time and the fit's prediction of it):
