@@ -2,7 +2,9 @@
 
 #include <time.h>
 
+#include <algorithm>
 #include <climits>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -21,24 +23,45 @@ int byte_count(const Bytes& b) {
   return int(b.size());
 }
 
+// A zcube message on the wire. Its charged size travels as an 8-byte trailer word. A payload of at
+// most kInlineMax bytes is copied into one MPI message with the trailer after it; a larger one
+// goes as a 16-byte header message (payload size, then the trailer word with kBodyFollows set)
+// and the payload itself, sent from the sender's own buffer: appending 8 bytes to a buffer of
+// several megabytes reallocated and copied all of it (9 ms for 18.5 MB). MPI keeps the order of
+// messages from one sender with one tag, so the body is the next message after its header.
+constexpr std::size_t kInlineMax = 4096;
+constexpr std::uint64_t kBodyFollows = std::uint64_t(1) << 63;
+
 class MpiSend final : public SendRequest {
 public:
+  MpiSend(Payload payload, std::uint64_t charged, int dst, int tag, MPI_Comm comm) {
+    const std::size_t n = payload.size();
+    if (n <= kInlineMax) {
+      head_.resize(n + sizeof charged);
+      std::copy(payload.begin(), payload.end(), head_.begin());
+      std::memcpy(head_.data() + n, &charged, sizeof charged);
+    } else {
+      const std::uint64_t word[2] = {n, charged | kBodyFollows};
+      head_.resize(sizeof word);
+      std::memcpy(head_.data(), word, sizeof word);
+      body_ = std::move(payload); // shared with its other holders, never written
+    }
+    MPI_Isend(head_.data(), byte_count(head_), MPI_BYTE, dst, tag, comm, &req_[0]);
+    if (!body_.empty())
+      MPI_Isend(body_.data(), byte_count(body_.bytes()), MPI_BYTE, dst, tag, comm, &req_[1]);
+  }
+  ~MpiSend() override { wait(); } // the buffers must outlive the transfer
   bool done() {
     int flag = 1;
-    if (req_ != MPI_REQUEST_NULL) MPI_Test(&req_, &flag, MPI_STATUS_IGNORE);
+    MPI_Testall(2, req_, &flag, MPI_STATUSES_IGNORE);
     return flag != 0;
   }
-  MpiSend(Bytes data, int dst, int tag, MPI_Comm comm) : data_(std::move(data)) {
-    MPI_Isend(data_.data(), byte_count(data_), MPI_BYTE, dst, tag, comm, &req_);
-  }
-  ~MpiSend() override { wait(); } // the buffer must outlive the transfer
-  void wait() override {
-    if (req_ != MPI_REQUEST_NULL) MPI_Wait(&req_, MPI_STATUS_IGNORE);
-  }
+  void wait() override { MPI_Waitall(2, req_, MPI_STATUSES_IGNORE); }
 
 private:
-  Bytes data_;
-  MPI_Request req_ = MPI_REQUEST_NULL;
+  Bytes head_;
+  Payload body_;
+  MPI_Request req_[2] = {MPI_REQUEST_NULL, MPI_REQUEST_NULL};
 };
 
 } // namespace
@@ -114,12 +137,7 @@ SendHandle MpiComm::isend(int dst, int tag, Message m) {
   if (stats_.log)
     stats_.log->sends.push_back(
         {dst, tag, m.charged, message_hops(topology_, nodes_, rank_, dst), now()});
-  const std::uint64_t charged = m.charged;
-  Bytes data = std::move(m.payload).take(); // copied only when another holder shares it
-  const std::size_t at = data.size();
-  data.resize(at + sizeof charged);
-  std::memcpy(data.data() + at, &charged, sizeof charged);
-  return std::make_unique<MpiSend>(std::move(data), dst, tag, world_);
+  return std::make_unique<MpiSend>(std::move(m.payload), m.charged, dst, tag, world_);
 }
 
 Message MpiComm::recv_message(int src, int tag, int* from) {
@@ -130,20 +148,29 @@ Message MpiComm::recv_message(int src, int tag, int* from) {
   int n = 0;
   const double arrived = clock(); // the probe returns once the message is there
   MPI_Get_count(&st, MPI_BYTE, &n);
+  const int from_rank = st.MPI_SOURCE;
   Bytes b(static_cast<std::size_t>(n));
-  MPI_Recv(b.data(), n, MPI_BYTE, st.MPI_SOURCE, tag, world_, MPI_STATUS_IGNORE);
+  MPI_Recv(b.data(), n, MPI_BYTE, from_rank, tag, world_, MPI_STATUS_IGNORE);
+  std::uint64_t charged = 0;
+  if (b.size() < sizeof charged) throw std::runtime_error("MPI message without its charged size");
+  std::memcpy(&charged, b.data() + b.size() - sizeof charged, sizeof charged);
+  b.resize(b.size() - sizeof charged);
+  if (charged & kBodyFollows) { // a header: the payload is the next message from its sender
+    std::uint64_t size = 0;
+    if (b.size() != sizeof size) throw std::runtime_error("MPI message header of a bad size");
+    std::memcpy(&size, b.data(), sizeof size);
+    charged &= ~kBodyFollows;
+    b = Bytes(static_cast<std::size_t>(size));
+    MPI_Recv(b.data(), byte_count(b), MPI_BYTE, from_rank, tag, world_, MPI_STATUS_IGNORE);
+  }
   reap();
   const double t1 = clock();
   stats_.comm_s += t1 - t;
   if (stats_.log) {
     stats_.log->activity(Activity::Wait, t - t0_, t1 - t0_);
-    stats_.log->recvs.push_back({st.MPI_SOURCE, tag, arrived - t0_, t1 - t0_});
+    stats_.log->recvs.push_back({from_rank, tag, arrived - t0_, t1 - t0_});
   }
-  if (from) *from = st.MPI_SOURCE;
-  std::uint64_t charged = 0;
-  if (b.size() < sizeof charged) throw std::runtime_error("MPI message without its charged size");
-  std::memcpy(&charged, b.data() + b.size() - sizeof charged, sizeof charged);
-  b.resize(b.size() - sizeof charged);
+  if (from) *from = from_rank;
   return {std::move(b), std::size_t(charged)};
 }
 

@@ -22,8 +22,9 @@ public:
   Topology topology() const override { return topology_; }
   using Comm::isend;
   using Comm::send;
-  // The payload travels with its charged size appended (8 bytes), so that a receiver forwarding
-  // it (a collective) charges what the sender was charged; the stats record the charged size.
+  // The payload travels with its charged size (an 8-byte trailer, or a header message before a
+  // payload above 4 KiB, sent from the payload's own buffer: mpi_comm.cpp), so that a receiver
+  // forwarding it (a collective) charges what the sender was charged; the stats record it.
   void send(int dst, int tag, Message m) override;
   SendHandle isend(int dst, int tag, Message m) override;
   Message recv_message(int src, int tag, int* from = nullptr) override;
