@@ -5,7 +5,9 @@
 #include <thread>
 #include <tuple>
 
+#include "algo/algorithm.hpp"
 #include "repro/paper_figures.hpp"
+#include "run/report.hpp"
 #include "scene/load.hpp"
 #include "sim/simulation.hpp"
 
@@ -68,6 +70,62 @@ void preload_scenes(const std::vector<SimConfig>& points, int jobs) {
     }
 }
 
+// The sequential renderer's pictures that points compare their images with, drawn once in the
+// process that forks the batch (each simulation would otherwise draw its own: a whole render of
+// the scene per point). Keyed by the cached scene, the frame and the run's frame count.
+using ReferenceKey = std::tuple<const Scene*, int, int>;
+std::map<ReferenceKey, ReferenceFrame>& reference_cache() {
+  static std::map<ReferenceKey, ReferenceFrame> cache;
+  return cache;
+}
+
+const Scene* cached_scene(const SimConfig& c) {
+  const auto& cache = scene_cache();
+  const auto it = c.scene_path.empty() ? cache.end() : cache.find(scene_key(c));
+  return it == cache.end() ? nullptr : it->second.get();
+}
+
+bool compares_image(const SimConfig& c) {
+  if (!c.compare_with_sequential || c.custom) return false;
+  try {
+    return find_algorithm(c.algorithm).draws_picture;
+  } catch (const std::exception&) {
+    return false; // an unknown algorithm: its simulation reports the error
+  }
+}
+
+// Draws, `jobs` at a time, the references two or more points of a cached scene compare with.
+void prepare_references(const std::vector<SimConfig>& points, int jobs) {
+  auto& refs = reference_cache();
+  std::map<ReferenceKey, int> uses;
+  for (const auto& p : points)
+    if (const Scene* s = compares_image(p) ? cached_scene(p) : nullptr)
+      for (int f = 0; f < p.options.frames; ++f)
+        ++uses[{s, f, p.options.frames}];
+  std::vector<ReferenceKey> todo;
+  for (const auto& [k, n] : uses)
+    if (n >= 2 && !refs.contains(k)) todo.push_back(k);
+  std::vector<ReferenceFrame> drawn(todo.size());
+  std::vector<std::thread> workers;
+  const int n = std::min<int>(std::max(1, jobs), int(todo.size()));
+  for (int w = 0; w < n; ++w)
+    workers.emplace_back([&, w] {
+      for (std::size_t i = std::size_t(w); i < todo.size(); i += std::size_t(n)) {
+        const auto& [scene, frame, frames] = todo[i];
+        drawn[i] = reference_frame(*scene, frame, frames);
+      }
+    });
+  for (auto& t : workers)
+    t.join();
+  for (std::size_t i = 0; i < todo.size(); ++i)
+    refs.emplace(todo[i], std::move(drawn[i]));
+  set_reference_lookup([](const Scene& scene, int frame, int frames) -> const ReferenceFrame* {
+    const auto& r = reference_cache();
+    const auto it = r.find({&scene, frame, frames});
+    return it == r.end() ? nullptr : &it->second;
+  });
+}
+
 } // namespace
 
 void attach_paper_figures(nlohmann::json& report) {
@@ -106,6 +164,7 @@ std::vector<nlohmann::json>
 simulate_batch(const std::vector<SimConfig>& points, int jobs,
                const std::function<void(const BatchProgress&)>& progress) {
   preload_scenes(points, jobs);
+  prepare_references(points, jobs);
   return run_batch(points, jobs, simulate_point, progress);
 }
 

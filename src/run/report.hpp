@@ -1,6 +1,7 @@
 #pragma once
 // The report (docs/user-guide.md, "One run") from what each node recorded: shared by the SimGrid
 // backend (virtual times) and any other backend (measured times), so both write the same schema.
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -88,6 +89,19 @@ void add_run_header(nlohmann::json& j, const RunHeader& h, const SimConfig& cfg,
 // it ran; total_s is the run's time (for idle_s). With the nodes' event logs, also "timeline".
 void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, int P,
                        double total_s);
+
+// What an image is compared with: the sequential renderer's picture of a scene at one frame of a
+// run of `frames` frames, as its colour hash and its depth map.
+struct ReferenceFrame {
+  std::string sha256;
+  std::vector<float> depth;
+};
+ReferenceFrame reference_frame(const Scene& scene, int frame, int frames);
+// Where add_image_section finds a reference already drawn (by the process that forks a batch of
+// simulations of the same scene, so that each draws it once): null when it has none, and then the
+// image section draws it itself. The lookup is the process's (inherited by forked children).
+using ReferenceLookup = std::function<const ReferenceFrame*(const Scene&, int frame, int frames)>;
+void set_reference_lookup(ReferenceLookup lookup);
 
 // "image": rows pasted into frames, hashes, and the comparison with the sequential renderer
 // (when cfg.compare_with_sequential). The frames are moved to `out` in frame order.
