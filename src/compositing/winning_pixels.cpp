@@ -32,7 +32,13 @@ public:
 
   std::vector<Message> split(const Routing& r, Merge how, Node& n) override {
     if (how == Merge::Zbuffer) hold_owned_zbuffer(r, n);
-    auto parts = serialize_sparse_by_owner(mine_, r.dest, r.parts);
+    // The list merge keeps its own rows as pixels (keep_, below): only the others' are serialised.
+    std::vector<int> others;
+    if (how == Merge::Lists) {
+      others = r.dest;
+      std::replace(others.begin(), others.end(), r.self, -1);
+    }
+    auto parts = serialize_sparse_by_owner(mine_, how == Merge::Lists ? others : r.dest, r.parts);
     const std::vector<int> runs = runs_per_destination(r.dest, r.parts);
     std::vector<Message> out;
     gathered_ = 0;
