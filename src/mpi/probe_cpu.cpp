@@ -7,14 +7,21 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "algo/composite.hpp"
 #include "algo/elastic_partition.hpp"
 #include "compositing/gather.hpp"
+#include "compositing/winning_pixels.hpp"
 #include "raster/active_pixels.hpp"
 #include "raster/renderer.hpp"
 #include "raster/zbuffer.hpp"
 #include "scene/load.hpp"
 #include "scene/tessellate.hpp"
 #include "util/nnls.hpp"
+
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#define ZC_CALLGRIND 1
+#endif
 
 namespace zc {
 
@@ -42,268 +49,362 @@ double cpu_now() {
   return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
 }
 
-// Seconds per call of fn (the median of calls repeated for at least `min_s`); `prep` runs before
-// each call, untimed.
-template <class Prep, class F> double time_loop(Prep&& prep, F&& fn, double min_s) {
-  std::vector<double> t;
-  double total = 0;
-  do {
-    prep();
-    const double t0 = cpu_now();
-    fn();
-    const double s = cpu_now() - t0;
-    t.push_back(s);
-    total += s;
-  } while (total < min_s || t.size() < 3);
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
-template <class F> double time_loop(F&& fn, double min_s) {
-  return time_loop([] {}, fn, min_s);
-}
+// The probe's cost groups, in the order they are measured: one multiplier each on the prior table
+// (the 80386's physical estimate keeps the proportions inside a group). Each block of loops below
+// measures its own groups with every group measured before it subtracted at the cost found.
+enum Group : std::size_t {
+  kVertex,
+  kTriangle,
+  kEstimate,
+  kTessellate,
+  kClear,
+  kPacking,
+  kMerge,
+  kListMerge,
+  kRecords,
+  kEdges,
+  kSpans,
+  kPixels,
+  kSort,
+  kScanline,
+  kGroups
+};
 
-// The probe's cost groups: one multiplier each on the prior table (the 80386's physical estimate
-// keeps the proportions inside a group); each has a loop that times it (nearly) alone.
 const std::vector<CostGroup>& probe_groups() {
   static const std::vector<CostGroup> g = {
       {"vertex", {"vertices_transformed"}},
       {"triangle", {"triangles_in", "triangles_culled", "triangles_clipped", "triangles_setup"}},
-      {"estimate", {"triangles_estimated"}},
+      {"estimate", {"triangles_estimated", "rows_scanned"}},
       {"tessellate", {"triangles_tessellated"}},
-      {"spans", {"spans", "rows_scanned"}},
+      {"clear", {"pixels_cleared"}},
+      {"packing", {"bytes_packed"}},
+      {"merge", {"merge_ops"}},
+      {"list_merge", {"list_merges"}},
+      {"records", {"records_packed"}},
+      {"edges", {"edge_walks"}},
+      {"spans", {"spans", "span_starts"}},
       {"pixels",
        {"pixels_generated", "pixels_tested", "pixels_written", "pixels_final", "texels_fetched"}},
-      {"clear", {"pixels_cleared"}},
-      {"merge", {"merge_ops"}},
-      {"packing", {"bytes_packed"}},
-      {"list_merge", {"list_merges"}},                // timed by the active merge
-      {"scanline", {"wpa_tested", "wpa_appended"}},  // timed by the active z-buffer
-      {"edges", {"edge_walks"}},                     // timed by the z-buffers and span lists
-      {"span_start", {"span_starts"}},               // timed by the z-buffers
-      {"sort", {"sort_steps"}},                      // timed by the span lists
-      {"records", {"records_packed"}}};              // timed by the sparse packing
+      {"sort", {"sort_steps"}},
+      {"scanline", {"wpa_tested", "wpa_appended"}}};
   return g;
 }
 
-struct Fit {
-  Matrix A;
-  std::vector<double> b;
-  nlohmann::json& log;
+// The blocks of loops, in the order they are solved (blocks()).
+enum BlockId : std::size_t {
+  kProjectLoops,
+  kSetupLoops,
+  kEstimateLoops,
+  kTessellateLoops,
+  kClearLoops,
+  kPackingLoops,
+  kMergeLoops,
+  kListMergeLoops,
+  kOutputLoops,
+  kZbufferLoops,
+  kSpanListLoops,
+  kActiveLoops,
+};
+
+// A block: the groups its loops measure, solved together (most blocks have one).
+struct Block {
+  const char* name;
+  std::vector<std::size_t> groups;
+};
+const std::vector<Block>& blocks() {
+  static const std::vector<Block> b = {
+      {"project", {kVertex}},
+      {"set-up", {kTriangle}},
+      {"load estimate", {kEstimate}},
+      {"tessellate", {kTessellate}},
+      {"clear", {kClear}},
+      {"location packing", {kPacking}},
+      {"location merge", {kMerge}},
+      {"active merge", {kListMerge}},
+      {"sparse output", {kRecords}},
+      // The frame-buffer z-buffer: a triangle's edges, its spans (found and started), its
+      // fragments; the scenes' and sizes' different mixes separate them.
+      {"z-buffer", {kEdges, kSpans, kPixels}},
+      {"span lists", {kSort}},
+      {"active z-buffer", {kScanline}}};
+  return b;
+}
+
+struct Loop {
+  std::size_t block;
+  std::string name;
+  Counters c;
+  double seconds;
+  std::size_t calls;
+};
+
+struct Probe {
   double min_s;
-  void add(const std::string& what, const Counters& c, double t) {
-    A.push_back(group_seconds(prior_i386_costs(), probe_groups(), c));
-    b.push_back(t);
-    log.push_back({{"loop", what}, {"seconds", t}, {"counters", c}});
+  std::vector<Loop> loops;
+
+  // Times fn (the median of calls repeated for at least min_s, three at least; `prep` runs before
+  // each call, untimed) and records the counters it leaves in c. Under callgrind every call's
+  // instructions are dumped apart, named after the loop (scripts/probe_instructions.py).
+  template <class Prep, class F>
+  void time(std::size_t block, const std::string& what, Counters& c, Prep&& prep, F&& fn) {
+    const std::string name = std::string(blocks()[block].name) + " " + what;
+#ifdef ZC_CALLGRIND
+    const std::string dump_name = "probe loop: " + name;
+#endif
+    std::vector<double> t;
+    double total = 0;
+    do {
+      prep();
+      c = Counters{};
+#ifdef ZC_CALLGRIND
+      CALLGRIND_ZERO_STATS;
+#endif
+      const double t0 = cpu_now();
+      fn();
+      const double s = cpu_now() - t0;
+#ifdef ZC_CALLGRIND
+      CALLGRIND_DUMP_STATS_AT(dump_name.c_str());
+#endif
+      t.push_back(s);
+      total += s;
+    } while (total < min_s || t.size() < 3);
+    std::sort(t.begin(), t.end());
+    loops.push_back({block, name, c, t[t.size() / 2], t.size()});
+  }
+  template <class F> void time(std::size_t block, const std::string& what, Counters& c, F&& fn) {
+    time(
+        block, what, c, [] {}, fn);
   }
 };
 
-// The renderer's loops on one scene at one size.
-void render_loops(Fit& f, const std::string& path, int size) {
+struct Picture {
+  Scene s;
+  std::string name;
+  int size;
+};
+
+Picture load(const std::string& path, int size) {
   LoadOptions lo;
   lo.width = lo.height = size;
-  const Scene s = load_scene(path, lo);
-  const std::string name = s.path.substr(s.path.find_last_of('/') + 1) + " " +
-                           std::to_string(size) + "x" + std::to_string(size);
+  Picture p{load_scene(path, lo), "", size};
+  p.name = p.s.path.substr(p.s.path.find_last_of('/') + 1) + " " + std::to_string(size) + "x" +
+           std::to_string(size);
+  return p;
+}
+
+// The loops of one scene at one size: projection, set-up, the frame-buffer z-buffer (set-up and
+// scan conversion, as elastic's slices and Blazek's nodes run it), Kurc et al.'s span lists and
+// active pixel z-buffer, the load estimate. `kurc`: also the active merge and the output (final
+// pixels packed, unpacked and pasted into the picture), on this picture's active pixels.
+void render_loops(Probe& p, const Picture& pic, bool kurc) {
+  const Scene& s = pic.s;
+  const int size = pic.size;
   const NodeRenderer nr(s);
   std::vector<ProjectedVertex> pv(s.vertices.size());
-  Counters cv, ct, cz, cs, ca, ce;
-  f.add("project " + name, cv,
-        time_loop(
-            [&] {
-              cv = Counters{};
-              for (std::size_t i = 0; i < pv.size(); ++i)
-                pv[i] = nr.project(s.vertices[i], cv);
-            },
-            f.min_s));
-  auto setup = [&](std::size_t i, TriangleBatch& batch, Counters& c) {
-    nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, batch, c);
+  Counters c;
+  p.time(kProjectLoops, pic.name, c, [&] {
+    for (std::size_t i = 0; i < pv.size(); ++i)
+      pv[i] = nr.project(s.vertices[i], c);
+  });
+  auto setup = [&](std::size_t i, TriangleBatch& batch, Counters& cc) {
+    nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, batch, cc);
   };
   TriangleBatch one;
-  f.add("set-up " + name, ct,
-        time_loop(
-            [&] {
-              ct = Counters{};
-              for (std::size_t i = 0; i < s.triangles.size(); ++i) {
-                one.clear();
-                setup(i, one, ct);
-              }
-            },
-            f.min_s));
-  // The sequential z-buffer of a slice (elastic, Blazek): set-up and scan conversion.
+  p.time(kSetupLoops, pic.name, c, [&] {
+    for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+      one.clear();
+      setup(i, one, c);
+    }
+  });
   Framebuffer fb = nr.make_framebuffer(RowSet::all(size));
-  f.add("z-buffer " + name, cz,
-        time_loop([&] { fb.clear(nr.background()); },
-                  [&] {
-                    cz = Counters{};
-                    for (std::size_t i = 0; i < s.triangles.size(); ++i) {
-                      one.clear();
-                      setup(i, one, cz);
-                      draw_batch(one, nr.shade(), fb, cz);
-                    }
-                  },
-                  f.min_s));
-  // Kurc et al.'s span lists and modified scanline z-buffer.
+  p.time(
+      kZbufferLoops, pic.name, c, [&] { fb.clear(nr.background()); },
+      [&] {
+        for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+          one.clear();
+          setup(i, one, c);
+          draw_batch(one, nr.shade(), fb, c);
+        }
+      });
+  std::vector<RowExtent> ext(s.triangles.size());
+  p.time(kEstimateLoops, pic.name, c, [&] {
+    for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+      const Triangle& t = s.triangles[i];
+      const ProjectedVertex* p3[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
+      if (!row_extent(p3, size, size, ext[i].y0, ext[i].y1)) ext[i] = {1, 0};
+    }
+    const auto rows = scan_load(load_differences(ext, size), size);
+    c.triangles_estimated = s.triangles.size();
+    c.rows_scanned = rows.size();
+  });
   TriangleBatch all;
   Counters ignored;
   for (std::size_t i = 0; i < s.triangles.size(); ++i)
     setup(i, all, ignored);
   SpanLists lists;
-  f.add("span lists " + name, cs,
-        time_loop(
-            [&] {
-              cs = Counters{};
-              lists = build_span_lists(all, size, size, cs);
-            },
-            f.min_s));
+  p.time(kSpanListLoops, pic.name, c, [&] { lists = build_span_lists(all, size, size, c); });
   ActivePixels wpa;
-  f.add("active z-buffer " + name, ca,
-        time_loop(
-            [&] {
-              ca = Counters{};
-              wpa = zbuffer_spans(lists, all, nr.shade(), size, ca);
-            },
-            f.min_s));
-  // Charles et al.'s load estimate: row extents, a difference array, a scan.
-  std::vector<RowExtent> ext(s.triangles.size());
-  f.add("load estimate " + name, ce,
-        time_loop(
-            [&] {
-              ce = Counters{};
-              for (std::size_t i = 0; i < s.triangles.size(); ++i) {
-                const Triangle& t = s.triangles[i];
-                const ProjectedVertex* p3[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
-                if (!row_extent(p3, size, size, ext[i].y0, ext[i].y1)) ext[i] = {1, 0};
-              }
-              const auto rows = scan_load(load_differences(ext, size), size);
-              ce.triangles_estimated = s.triangles.size();
-              ce.rows_scanned = rows.size();
-            },
-            f.min_s));
-  // Merges and packing on this picture's active pixels: two halves of the rows' pixels.
-  ActivePixels odd = select_rows(wpa, [](int y) { return y % 2; });
-  ActivePixels even = select_rows(wpa, [](int y) { return y % 2 == 0; });
-  Counters cm;
-  f.add("active merge " + name, cm,
-        time_loop(
-            [&] {
-              cm = Counters{};
-              (void)merge_active(odd, even, cm);
-            },
-            f.min_s));
-  Counters cp;
-  f.add("sparse packing " + name, cp,
-        time_loop(
-            [&] {
-              cp = Counters{};
-              cp.bytes_packed = serialize_sparse(wpa).size();
-              cp.records_packed = wpa.count();
-            },
-            f.min_s));
-  // The picture pasted from them (Kurc et al.'s output on node 0: compositing::paste).
-  const std::vector<Message> parts{uncharged(serialize_sparse(wpa))};
+  p.time(kActiveLoops, pic.name, c, [&] { wpa = zbuffer_spans(lists, all, nr.shade(), size, c); });
+  if (!kurc) return;
+  const ActivePixels odd = select_rows(wpa, [](int y) { return y % 2; });
+  const ActivePixels even = select_rows(wpa, [](int y) { return y % 2 == 0; });
+  p.time(kListMergeLoops, pic.name, c, [&] { (void)merge_active(odd, even, c); });
+  // Kurc et al.'s output (compositing/gather.hpp): the final pixels packed into a message, which
+  // node 0 unpacks and pastes into the picture.
   Framebuffer picture = nr.make_framebuffer(RowSet::all(size));
-  Counters cu;
-  f.add("sparse paste " + name, cu,
-        time_loop(
-            [&] {
-              cu = Counters{};
-              compositing::paste(parts, picture, size, cu);
-            },
-            f.min_s));
+  p.time(kOutputLoops, pic.name, c, [&] {
+    std::vector<Message> parts;
+    parts.push_back(
+        compositing::pack_pixels(wpa, compositing::sparse_message, kurc_pixel_records(), c));
+    compositing::paste(parts, picture, size, c);
+  });
 }
 
-// Frame buffers: a new one (allocation and clear: what make_framebuffer costs), locations
-// packed into a message and merged back (the full z-buffer merges).
-void buffer_loops(Fit& f, int width, int height) {
-  const std::string name = std::to_string(width) + "x" + std::to_string(height);
-  Counters cc;
-  cc.pixels_cleared = std::uint64_t(width) * height;
-  f.add("new frame buffer " + name, cc,
-        time_loop([&] { Framebuffer fb(width, RowSet::all(height), glm::vec3(0)); }, f.min_s));
-  Framebuffer a(width, RowSet::all(height), glm::vec3(0)), b = a;
+// Blazek's nodes: the thesis's spheres (the workloads' triangles, as few or as many a sphere)
+// tessellated, then set up and drawn into the node's frame buffer.
+void sphere_loops(Probe& p, const Picture& pic) {
+  const Scene& s = pic.s;
+  Counters c;
+  p.time(kTessellateLoops, pic.name, c, [&] {
+    for (const ObjectDesc& d : s.objects)
+      if (d.kind != "mesh") c.triangles_tessellated += tessellate(d).triangles.size();
+  });
+  const NodeRenderer nr(s);
+  std::vector<ProjectedVertex> pv(s.vertices.size());
+  for (std::size_t i = 0; i < pv.size(); ++i)
+    pv[i] = nr.project(s.vertices[i], c);
+  TriangleBatch one;
+  p.time(kSetupLoops, pic.name, c, [&] {
+    for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+      one.clear();
+      nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, one, c);
+    }
+  });
+  Framebuffer fb = nr.make_framebuffer(RowSet::all(pic.size));
+  p.time(
+      kZbufferLoops, pic.name, c, [&] { fb.clear(nr.background()); },
+      [&] {
+        for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+          one.clear();
+          nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, one, c);
+          draw_batch(one, nr.shade(), fb, c);
+        }
+      });
+}
+
+// Frame buffers: a new one (allocation and clear: what make_framebuffer costs), locations packed
+// into a message and merged back (the full z-buffer merges).
+void buffer_loops(Probe& p, int size, bool merges) {
+  const std::string name = std::to_string(size) + "x" + std::to_string(size);
+  Counters c;
+  p.time(kClearLoops, name, c, [&] {
+    Framebuffer fb(size, RowSet::all(size), glm::vec3(0));
+    c.pixels_cleared = fb.pixel_count();
+  });
+  if (!merges) return;
+  Framebuffer a(size, RowSet::all(size), glm::vec3(0)), b = a;
   for (std::size_t i = 0; i < b.depth().size(); i += 3) {
     b.depth()[i] = float(i % 7) * 0.1f;
     b.ids()[i] = std::uint32_t(i);
   }
-  Counters cp;
   std::vector<std::uint8_t> msg;
-  f.add("location packing " + name, cp,
-        time_loop(
-            [&] {
-              msg = b.pack_locations(0, b.pixel_count());
-              cp.bytes_packed = msg.size();
-            },
-            f.min_s));
-  Counters cm;
-  f.add("location merge " + name, cm,
-        time_loop(
-            [&] {
-              cm = Counters{};
-              cm.merge_ops = a.merge_locations(msg, 0);
-            },
-            f.min_s));
+  p.time(kPackingLoops, name, c, [&] {
+    msg = b.pack_locations(0, b.pixel_count());
+    c.bytes_packed = msg.size();
+  });
+  p.time(kMergeLoops, name, c, [&] { c.merge_ops = a.merge_locations(msg, 0); });
 }
 
-void tessellation_loop(Fit& f, const std::string& path) {
-  LoadOptions lo;
-  const Scene s = load_scene(path, lo);
-  Counters c;
-  f.add("tessellate " + s.path.substr(s.path.find_last_of('/') + 1), c,
-        time_loop(
-            [&] {
-              c = Counters{};
-              for (const ObjectDesc& d : s.objects)
-                if (d.kind != "mesh") c.triangles_tessellated += tessellate(d).triangles.size();
-            },
-            f.min_s));
+// Solves the blocks in order: a loop's time less its groups measured before, divided among the
+// block's own groups (non-negative least squares on relative errors). Returns one multiplier a
+// group on the prior table and writes every loop's fitted prediction into `log`.
+std::vector<double> solve(const std::vector<Loop>& loops, nlohmann::json& log) {
+  const CostTable prior = prior_i386_costs();
+  std::vector<double> k(kGroups, 0.0);
+  std::vector<bool> known(kGroups, false);
+  std::vector<std::vector<double>> A;
+  for (const Loop& l : loops)
+    A.push_back(group_seconds(prior, probe_groups(), l.c));
+  for (std::size_t b = 0; b < blocks().size(); ++b) {
+    const auto& gs = blocks()[b].groups;
+    Matrix M;
+    std::vector<double> r;
+    for (std::size_t i = 0; i < loops.size(); ++i) {
+      if (loops[i].block != b) continue;
+      double rest = loops[i].seconds;
+      std::vector<double> row;
+      for (std::size_t g = 0; g < kGroups; ++g) {
+        const bool mine = std::find(gs.begin(), gs.end(), g) != gs.end();
+        if (known[g])
+          rest -= k[g] * A[i][g];
+        else if (mine)
+          row.push_back(A[i][g] / loops[i].seconds);
+        else if (A[i][g] > 0)
+          throw std::logic_error("probe loop '" + loops[i].name + "' runs group " +
+                                 probe_groups()[g].name + " before it is measured");
+      }
+      M.push_back(row);
+      r.push_back(rest / loops[i].seconds);
+    }
+    if (M.empty())
+      throw std::logic_error(std::string("probe block without loop: ") + blocks()[b].name);
+    const std::vector<double> x = nnls(M, r);
+    for (std::size_t j = 0; j < gs.size(); ++j) {
+      k[gs[j]] = x[j];
+      known[gs[j]] = true;
+    }
+  }
+  nlohmann::json rows = nlohmann::json::array(), groups = nlohmann::json::array(),
+                 mult = nlohmann::json::object(), per_op = nlohmann::json::object();
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    double pred = 0;
+    nlohmann::json by_group = nlohmann::json::object();
+    for (std::size_t g = 0; g < kGroups; ++g) {
+      pred += k[g] * A[i][g];
+      if (A[i][g] > 0) by_group[probe_groups()[g].name] = A[i][g];
+    }
+    rows.push_back({{"loop", loops[i].name},
+                    {"block", blocks()[loops[i].block].name},
+                    {"seconds", loops[i].seconds},
+                    {"calls", loops[i].calls},
+                    {"counters", loops[i].c},
+                    {"prior_s", by_group},
+                    {"predicted_s", pred}});
+  }
+  for (std::size_t g = 0; g < kGroups; ++g) {
+    groups.push_back({{"group", probe_groups()[g].name}, {"fields", probe_groups()[g].fields}});
+    mult[probe_groups()[g].name] = k[g];
+  }
+  CostTable prior_t = prior;
+  for (auto& [id, v] : prior_t.fields())
+    per_op[id.substr(5)] = *v;
+  // The loops (each its counters, time, the prior's seconds a group and the fitted prediction),
+  // the groups, the prior table (seconds an operation on the 80386) and each group's multiplier on
+  // it: what scripts/probe_instructions.py re-solves on instruction counts.
+  log = {{"loops", rows}, {"groups", groups}, {"prior_i386_s", per_op}, {"multipliers", mult}};
+  return k;
 }
 
 } // namespace
 
 CostTable measure_cpu(const std::string& root, double min_seconds, nlohmann::json& log) {
   premap_heap(std::size_t(1) << 30);
-  Fit f{{}, {}, log, min_seconds};
-  // Sizes of the validation workloads' order (frame buffers of tens to hundreds of megabytes,
-  // beyond the caches), other scenes.
-  render_loops(f, root + "/scenes/teapot.json", 1024);
-  render_loops(f, root + "/scenes/teapot.json", 3072);
-  render_loops(f, root + "/scenes/newell_teapot.json", 2048);
-  // A dense mesh (78,738 triangles: long span lists, few pixels a span), at two sizes.
-  render_loops(f, root + "/scenes/bone.json", 1024);
-  render_loops(f, root + "/scenes/bone.json", 4096);
-  buffer_loops(f, 2048, 2048);
-  buffer_loops(f, 4096, 4096);
-  tessellation_loop(f, root + "/scenes/blazek/thesis_spheres_16.json");
-  // Relative errors, and a weak pull of each multiplier towards the overall ratio (a group no loop
-  // exercises, texels here, keeps the table's proportions).
-  const std::size_t G = probe_groups().size(), rows = f.A.size();
-  double ta = 0, tb = 0;
-  for (std::size_t r = 0; r < rows; ++r) {
-    for (double v : f.A[r])
-      ta += v;
-    tb += f.b[r];
-  }
-  const double k0 = ta > 0 ? tb / ta : 1.0;
-  Matrix A = f.A;
-  std::vector<double> b = f.b;
-  for (std::size_t r = 0; r < rows; ++r) {
-    for (double& v : A[r])
-      v /= f.b[r];
-    b[r] = 1.0;
-  }
-  for (std::size_t g = 0; g < G; ++g) {
-    std::vector<double> line(G, 0.0);
-    line[g] = 0.01 / k0;
-    A.push_back(line);
-    b.push_back(0.01);
-  }
-  const std::vector<double> k = nnls(A, b);
-  for (std::size_t r = 0; r < rows; ++r) {
-    double p = 0;
-    for (std::size_t g = 0; g < G; ++g)
-      p += f.A[r][g] * k[g];
-    log[r]["predicted_s"] = p;
-  }
+  Probe p{min_seconds, {}};
+  // The bone's 78,738 triangles (a dense mesh as the bunny's, on no workload) at the workloads'
+  // sizes and triangle sizes: 512 and 1024 (elastic's bunny at 1024x1024: 2-4 rows and 2 pixels a
+  // span), 2048 and 4096 (Kurc's bunny at 5120x5120: 20 rows, 8 pixels a span; a frame buffer of
+  // hundreds of megabytes). The thesis's 16 spheres: Blazek's triangles at the workload's size.
+  render_loops(p, load(root + "/scenes/bone.json", 512), false);
+  render_loops(p, load(root + "/scenes/bone.json", 1024), false);
+  render_loops(p, load(root + "/scenes/bone.json", 2048), false);
+  render_loops(p, load(root + "/scenes/bone.json", 4096), true);
+  sphere_loops(p, load(root + "/scenes/blazek/thesis_spheres_16.json", 512));
+  buffer_loops(p, 4096, true);
+  buffer_loops(p, 5120, false);
+  // Every loop recorded in block order, so a block's loops come after those it subtracts.
+  std::stable_sort(p.loops.begin(), p.loops.end(),
+                   [](const Loop& a, const Loop& b) { return a.block < b.block; });
+  const std::vector<double> k = solve(p.loops, log);
   return scale_groups(prior_i386_costs(), probe_groups(), k);
 }
 

@@ -1,8 +1,10 @@
 #pragma once
 // The probe's CPU measurement (mpi/probe.hpp): every counted cost timed on zcube's own loops, the
 // code the algorithms call (projection, set-up, the scanline z-buffer, span lists and the active
-// pixel z-buffer, a fresh frame buffer, both merges, packing into messages, tessellation, the load
-// estimate), on probe scenes none of the validation workloads uses.
+// pixel z-buffer, a fresh frame buffer, both merges, the final pixels packed and pasted,
+// tessellation, the load estimate), on scenes none of the validation workloads uses, at their
+// sizes. The loops are solved in a fixed order, each block of loops for its own cost groups with
+// the groups measured before it subtracted (docs/machines.md, "How the probe measures the CPU").
 #include <string>
 
 #include <nlohmann/json.hpp>
