@@ -19,10 +19,12 @@ struct RowSet {
   static RowSet interleaved(int phase, int stride, int height) { return {phase, height, stride}; }
   int count() const { return end > begin ? (end - begin + stride - 1) / stride : 0; }
   bool contains(int y) const { return y >= begin && y < end && (y - begin) % stride == 0; }
-  int local(int y) const { return (y - begin) / stride; }
+  // (Contiguous rows, the common case, skip the integer division: it is per span.)
+  int local(int y) const { return stride == 1 ? y - begin : (y - begin) / stride; }
   // First row of the set at or after y.
   int first_from(int y) const {
     if (y <= begin) return begin;
+    if (stride == 1) return y;
     return begin + ((y - begin + stride - 1) / stride) * stride;
   }
 };

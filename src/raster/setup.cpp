@@ -50,18 +50,25 @@ struct SnapVertex {
   double invw;
 };
 
-AttrPlane make_plane(const SnapVertex* s, double a0v, double a1v, double a2v, double den) {
-  // Plane through the three snapped vertices, in pixel units, evaluated at pixel centres.
-  const double x0 = double(s[0].X) / kSub, y0 = double(s[0].Y) / kSub;
-  const double x1 = double(s[1].X) / kSub - x0, y1 = double(s[1].Y) / kSub - y0;
-  const double x2 = double(s[2].X) / kSub - x0, y2 = double(s[2].Y) / kSub - y0;
-  const double d1 = a1v - a0v, d2 = a2v - a0v;
-  AttrPlane p;
-  p.ax = (d1 * y2 - d2 * y1) / den;
-  p.ay = (d2 * x1 - d1 * x2) / den;
-  p.a0 = a0v - p.ax * x0 - p.ay * y0 + 0.5 * p.ax + 0.5 * p.ay;
-  return p;
-}
+// The geometry every attribute plane of one triangle shares: the snapped vertices in pixel units,
+// relative to the first, and twice the area.
+struct PlaneFrame {
+  double x0, y0, x1, y1, x2, y2, den;
+  PlaneFrame(const SnapVertex* s, double den_)
+      : x0(double(s[0].X) / kSub), y0(double(s[0].Y) / kSub), x1(double(s[1].X) / kSub - x0),
+        y1(double(s[1].Y) / kSub - y0), x2(double(s[2].X) / kSub - x0),
+        y2(double(s[2].Y) / kSub - y0), den(den_) {}
+
+  // Plane through the three snapped vertices' values, in pixel units, evaluated at pixel centres.
+  AttrPlane plane(double a0v, double a1v, double a2v) const {
+    const double d1 = a1v - a0v, d2 = a2v - a0v;
+    AttrPlane p;
+    p.ax = (d1 * y2 - d2 * y1) / den;
+    p.ay = (d2 * x1 - d1 * x2) / den;
+    p.a0 = a0v - p.ax * x0 - p.ay * y0 + 0.5 * p.ax + 0.5 * p.ay;
+    return p;
+  }
+};
 
 void emit(const SnapVertex* s, const SetupInput& in, bool textured, int width, int height,
           TriangleBatch& out, Counters& c) {
@@ -99,18 +106,16 @@ void emit(const SnapVertex* s, const SetupInput& in, bool textured, int width, i
     const bool top_left = t.A[e] > 0 || (t.A[e] == 0 && t.B[e] > 0);
     t.bias[e] = top_left ? 0 : 1;
   }
-  const double den = double(area2) / double(kSub * kSub);
-  t.z = make_plane(v, v[0].z, v[1].z, v[2].z, den);
-  t.r = make_plane(v, v[0].attr[0], v[1].attr[0], v[2].attr[0], den);
-  t.g = make_plane(v, v[0].attr[1], v[1].attr[1], v[2].attr[1], den);
-  t.b = make_plane(v, v[0].attr[2], v[1].attr[2], v[2].attr[2], den);
+  const PlaneFrame f(v, double(area2) / double(kSub * kSub));
+  t.z = f.plane(v[0].z, v[1].z, v[2].z);
+  t.r = f.plane(v[0].attr[0], v[1].attr[0], v[2].attr[0]);
+  t.g = f.plane(v[0].attr[1], v[1].attr[1], v[2].attr[1]);
+  t.b = f.plane(v[0].attr[2], v[1].attr[2], v[2].attr[2]);
   if (textured) {
     TexPlanes tp;
-    tp.uw = make_plane(v, v[0].attr[3] * v[0].invw, v[1].attr[3] * v[1].invw,
-                       v[2].attr[3] * v[2].invw, den);
-    tp.vw = make_plane(v, v[0].attr[4] * v[0].invw, v[1].attr[4] * v[1].invw,
-                       v[2].attr[4] * v[2].invw, den);
-    tp.w1 = make_plane(v, v[0].invw, v[1].invw, v[2].invw, den);
+    tp.uw = f.plane(v[0].attr[3] * v[0].invw, v[1].attr[3] * v[1].invw, v[2].attr[3] * v[2].invw);
+    tp.vw = f.plane(v[0].attr[4] * v[0].invw, v[1].attr[4] * v[1].invw, v[2].attr[4] * v[2].invw);
+    tp.w1 = f.plane(v[0].invw, v[1].invw, v[2].invw);
     t.tex = std::int32_t(out.tex.size());
     out.tex.push_back(tp);
   }
@@ -141,6 +146,18 @@ SnapVertex snap(const ClipVertex& cv, int width, int height) {
   for (int i = 0; i < 5; ++i)
     s.attr[i] = cv.a[4 + i];
   return s;
+}
+
+// True when every vertex of the triangle `poly` is inside the six planes (clip_polygon's own
+// distances, NaN outside): clip_polygon would return kClipInside and leave it as it is.
+bool inside_view(const ClipPolygon& poly) {
+  bool in = true;
+  for (int i = 0; i < 3; ++i) {
+    const double x = poly.v[i].a[0], y = poly.v[i].a[1], z = poly.v[i].a[2], w = poly.v[i].a[3];
+    const double gw = kGuardBand * w;
+    in &= z + w >= 0 && w - z >= 0 && gw + x >= 0 && gw - x >= 0 && gw + y >= 0 && gw - y >= 0;
+  }
+  return in;
 }
 
 } // namespace
@@ -210,7 +227,8 @@ void setup_triangle(const SetupInput& in, int width, int height, bool cull_back,
     a[7] = textured ? in.uv[i]->x : 0.0;
     a[8] = textured ? in.uv[i]->y : 0.0;
   }
-  const ClipResult cr = clip_polygon(poly, kGuardBand);
+  // Most triangles lie inside every plane: clip_polygon's outcodes, without its general loop.
+  const ClipResult cr = inside_view(poly) ? kClipInside : clip_polygon(poly, kGuardBand);
   if (cr == kClipOutside) {
     ++c.triangles_culled;
     return;

@@ -1,5 +1,7 @@
 #include "raster/zbuffer.hpp"
 
+#include <cstring>
+
 #if defined(__x86_64__)
 #include <immintrin.h>
 #endif
@@ -8,13 +10,20 @@ namespace zc {
 
 namespace {
 
-// floor(n / d) and the remainder in [0, d), for d > 0.
-inline void floor_divmod(std::int64_t n, std::int64_t d, std::int64_t& q, std::int64_t& r) {
-  q = n / d;
+// floor(n / d) and the remainder in [0, d), for d > 0, exactly, without a 64-bit divide: the
+// quotient from a double reciprocal is within 1 of the true one for |n| < 2^56 (a few units in
+// the last place of a quotient below 2^48), and integer remainders settle it.
+inline void floor_divmod(std::int64_t n, std::int64_t d, double inv_d, std::int64_t& q,
+                         std::int64_t& r) {
+  q = std::int64_t(double(n) * inv_d);
   r = n - q * d;
-  if (r < 0) {
+  while (r < 0) {
     --q;
     r += d;
+  }
+  while (r >= d) {
+    ++q;
+    r -= d;
   }
 }
 
@@ -26,8 +35,9 @@ EdgeWalk::EdgeWalk(const ScreenTriangle& t, int e, int y, int stride) {
   const std::int64_t dK = t.B[e] * kSub * stride;
   sign_ = t.A[e] > 0 ? 1 : (t.A[e] < 0 ? -1 : 0);
   d_ = sign_ == 0 ? 1 : (t.A[e] > 0 ? t.A[e] : -t.A[e]) * kSub;
-  floor_divmod(K, d_, q_, r_);
-  floor_divmod(dK, d_, dq_, dr_);
+  const double inv_d = 1.0 / double(d_);
+  floor_divmod(K, d_, inv_d, q_, r_);
+  floor_divmod(dK, d_, inv_d, dq_, dr_);
 }
 
 namespace {
@@ -96,6 +106,8 @@ __attribute__((target("avx2"))) void flat_span_avx2(const FlatSpan& s, const dou
   const __m256i id_biased = _mm256_xor_si256(id, sign);
   const __m256i none = _mm256_set1_epi32(-1); // kNoTriangle
   const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  const __m256i pack3 = _mm256_setr_epi8(0, 1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1, 0,
+                                         1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1);
   for (int x = x0; x <= x1; x += 8, i += 8) {
     const __m256i live = _mm256_cmpgt_epi32(_mm256_set1_epi32(x1 - x + 1), lane);
     const __m256d xa = _mm256_add_pd(_mm256_set1_pd(double(x)), _mm256_setr_pd(0, 1, 2, 3));
@@ -112,26 +124,34 @@ __attribute__((target("avx2"))) void flat_span_avx2(const FlatSpan& s, const dou
                                                _mm256_and_si256(_mm256_castps_si256(eq), id_lt)));
     const int m = _mm256_movemask_ps(_mm256_castsi256_ps(win));
     if (m == 0) continue;
-    alignas(32) std::int32_t r[8], g[8], b[8];
-    _mm256_store_si256(reinterpret_cast<__m256i*>(r),
-                       to_bytes8(_mm256_mul_ps(plane8(row[1], rax, xa, xb), kr)));
-    _mm256_store_si256(reinterpret_cast<__m256i*>(g),
-                       to_bytes8(_mm256_mul_ps(plane8(row[2], gax, xa, xb), kg)));
-    _mm256_store_si256(reinterpret_cast<__m256i*>(b),
-                       to_bytes8(_mm256_mul_ps(plane8(row[3], bax, xa, xb), kb)));
+    // Each lane's colour as r | g << 8 | b << 16 (the bytes are 0..255), then the three bytes of
+    // each of a 128-bit half's four pixels packed into its low 12 bytes.
+    const __m256i r = to_bytes8(_mm256_mul_ps(plane8(row[1], rax, xa, xb), kr));
+    const __m256i g = to_bytes8(_mm256_mul_ps(plane8(row[2], gax, xa, xb), kg));
+    const __m256i b = to_bytes8(_mm256_mul_ps(plane8(row[3], bax, xa, xb), kb));
+    const __m256i px =
+        _mm256_or_si256(r, _mm256_or_si256(_mm256_slli_epi32(g, 8), _mm256_slli_epi32(b, 16)));
+    std::uint8_t* const out = s.rgb + 3 * i;
+    if (m == 0xff) { // all eight pixels won: 24 bytes in four stores
+      const __m256i rgb = _mm256_shuffle_epi8(px, pack3);
+      const __m128i lo = _mm256_castsi256_si128(rgb), hi = _mm256_extracti128_si256(rgb, 1);
+      _mm_storel_epi64(reinterpret_cast<__m128i*>(out), lo);
+      const std::int32_t lo_tail = _mm_extract_epi32(lo, 2), hi_tail = _mm_extract_epi32(hi, 2);
+      std::memcpy(out + 8, &lo_tail, 4);
+      _mm_storel_epi64(reinterpret_cast<__m128i*>(out + 12), hi);
+      std::memcpy(out + 20, &hi_tail, 4);
+    } else {
+      alignas(32) std::int32_t c[8];
+      _mm256_store_si256(reinterpret_cast<__m256i*>(c), px);
+      for (int k = 0; k < 8; ++k)
+        if (m >> k & 1) std::memcpy(out + 3 * k, &c[k], 3);
+    }
     const int fresh = _mm256_movemask_ps(
         _mm256_castsi256_ps(_mm256_and_si256(win, _mm256_cmpeq_epi32(ids, none))));
     _mm256_maskstore_ps(s.depth + i, win, z);
     _mm256_maskstore_epi32(reinterpret_cast<int*>(s.ids + i), win, id);
     first += std::uint64_t(__builtin_popcount(unsigned(fresh)));
     written += std::uint64_t(__builtin_popcount(unsigned(m)));
-    for (int k = 0; k < 8; ++k)
-      if (m >> k & 1) {
-        std::uint8_t* p = s.rgb + 3 * (i + k);
-        p[0] = std::uint8_t(r[k]);
-        p[1] = std::uint8_t(g[k]);
-        p[2] = std::uint8_t(b[k]);
-      }
   }
 }
 
@@ -161,7 +181,7 @@ void draw_untextured(const ScreenTriangle& t, const ShadeContext& ctx, const Row
     const double row[4] = {t.z.row(y), t.r.row(y), t.g.row(y), t.b.row(y)};
     const std::size_t i = fb.index(x0, y);
 #ifdef ZC_FLAT_SPAN_AVX2
-    if (avx2 && x1 - x0 >= 7) // shorter spans: the scalar loop measured faster
+    if (avx2 && x1 - x0 >= 2) // shorter spans: the scalar loop measured faster
       flat_span_avx2(s, row, x0, x1, i, written, first);
     else
 #endif

@@ -53,12 +53,9 @@ void for_each_span(const ScreenTriangle& t, const RowSet& rows, int width, F&& f
   int y = rows.first_from(t.ymin);
   const int yend = std::min(t.ymax + 1, rows.end);
   if (y >= yend) return;
-  if (yend - y <=
-      4 * rows.stride) { // a few rows: three divisions a row cost less than a walk's set-up
-    for (; y < yend; y += rows.stride) {
-      int x0, x1;
-      if (t.span(y, width, x0, x1)) f(y, x0, x1);
-    }
+  if (yend - y <= rows.stride) { // one row: its three divisions cost less than a walk's set-up
+    int x0, x1;
+    if (t.span(y, width, x0, x1)) f(y, x0, x1);
     return;
   }
   EdgeWalk e[3] = {{t, 0, y, rows.stride}, {t, 1, y, rows.stride}, {t, 2, y, rows.stride}};
