@@ -8,6 +8,15 @@ usage: probe_instructions.py PROBE_CG PROBE_JSON PROFILE_DIR...
   PROFILE_DIR scripts/mpi_profile.sh's output for a one-rank run (dumps at every phase boundary,
               report.json with the phases' counters)
 
+e.g. (about 15 minutes on a loaded machine; the second rank is the ping-pong's peer only):
+  OMPI_MCA_mpi_yield_when_idle=1 mpirun -np 1 valgrind --tool=callgrind \
+    --callgrind-out-file=/tmp/pcg/cg.%p build/zcube-full probe --seconds 0 --out /tmp/pcg/c.xml \
+    --json /tmp/pcg/probe.json : -np 1 build/zcube-full probe --seconds 0 --out /tmp/pcg/c.xml \
+    --json /tmp/pcg/probe.json
+  scripts/mpi_profile.sh /tmp/prof pair-rs 1 --algorithm pair-rs --scene scenes/bunny.json \
+    --size 5120x5120
+  scripts/probe_instructions.py /tmp/pcg /tmp/pcg/probe.json /tmp/prof/pair-rs
+
 The probe's loops are re-solved block by block as zcube probe solves their seconds
 (src/mpi/probe_cpu.cpp), on their instructions: instructions an operation. A phase's counted
 operations times those predict its instructions; callgrind counts them. The difference is work the
@@ -125,6 +134,8 @@ def phase_instructions(d):
 
 
 def main():
+    if len(sys.argv) < 3:
+        sys.exit(__doc__)
     cg, pj = sys.argv[1], json.load(open(sys.argv[2]))
     cpu = pj["ranks"][0]["cpu"]
     groups = [g["group"] for g in cpu["groups"]]
