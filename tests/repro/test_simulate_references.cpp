@@ -31,6 +31,7 @@ TEST(SimulateReferences, BatchComparesAsEachSimulationAlone) {
   set_reference_lookup({}); // the batch's; the runs below draw their own
   for (std::size_t i = 0; i < pts.size(); ++i) {
     ASSERT_EQ(reps[i].value("status", ""), "ok") << reps[i].dump();
+    EXPECT_EQ(reps[i]["nodes"], pts[i].nodes) << "reports in the points' order (run longest first)";
     EXPECT_EQ(reps[i]["image"]["identical_to_sequential"], true);
     EXPECT_EQ(reps[i]["image"], run_simulation_isolated(pts[i])["image"]) << i;
   }
