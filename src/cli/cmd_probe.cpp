@@ -49,7 +49,8 @@ static int cmd_probe(std::vector<std::string> args) {
   std::cout << std::setprecision(4) << "network: start-up "
             << n["startup_short_s"].get<double>() * 1e6 << " us (short), "
             << n["startup_long_s"].get<double>() * 1e6 << " us (long), "
-            << 1e-6 / std::max(n["per_byte_s"].get<double>(), 1e-300) << " MB/s\n"
+            << 1e-6 / std::max(n["per_byte_s"].get<double>(), 1e-300) << " MB/s, both ways "
+            << n["both_ways_Bps"].get<double>() * 1e-6 << " MB/s in all (0: no limit)\n"
             << "CPU (ns): vertex " << m["cost"]["cost_vertices_transformed"].get<double>() * 1e9
             << ", triangle set-up " << m["cost"]["cost_triangles_setup"].get<double>() * 1e9
             << ", span " << m["cost"]["cost_spans"].get<double>() * 1e9 << ", fragment "

@@ -91,6 +91,11 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
   spec.net.short_max_bytes = net.short_max_bytes;
   spec.net.per_byte_s = net.per_byte_s;
   spec.net.per_hop_s = 0;
+  // Two messages crossing share the memory system: each direction's per-byte cost while the other
+  // is busy too is 2 / both_ways_Bps (a duplex limit, as the Volvox's T800 links have); none when
+  // the exchange is no slower a byte than one message alone.
+  spec.net.both_ways_Bps =
+      net.both_busy_per_byte_s > net.per_byte_s ? 2.0 / net.both_busy_per_byte_s : 0.0;
   spec.net.switching = Switching::Circuit;
   spec.net.host_startup_s = net.short_s;
   spec.net.host_per_byte_s = net.per_byte_s;
@@ -113,6 +118,10 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
             {"startup_long_s", net.long_s},
             {"short_max_bytes", net.short_max_bytes},
             {"per_byte_s", net.per_byte_s},
+            {"both_busy_fit_s", net.both_busy_fit_s},
+            {"both_busy_per_byte_s", net.both_busy_per_byte_s},
+            {"both_ways_Bps", spec.net.both_ways_Bps},
+            {"exchanges", net.exchanges},
             {"ranges", net.ranges},
             {"samples", net.samples}}},
           {"cost",

@@ -36,6 +36,33 @@ std::vector<double> pingpong(MpiComm& comm, int peer, std::size_t bytes, int rep
   return t;
 }
 
+// Times of exchanges of `bytes` between rank 0 and `peer`: both send at once, then both receive
+// (Kurc's PAIR swap, ZBUF-EXC's halves); from a barrier to the later of the two receives. On shared
+// memory both copies draw on one memory system, so a direction moves slower while the other is
+// busy: the duplex limit a platform states (NetworkParams::both_ways_Bps). Collective over the
+// world (ranks outside the pair only take part in the barrier and the reduction).
+std::vector<double> exchange(MpiComm& comm, int peer, std::size_t bytes, int reps) {
+  constexpr int kTag = 8;
+  const int me = comm.rank();
+  const bool in_pair = me == 0 || me == peer;
+  std::vector<double> t;
+  for (int i = 0; i < reps; ++i) {
+    Message m{Bytes(in_pair ? bytes : 0), bytes};
+    MPI_Barrier(MPI_COMM_WORLD);
+    const double t0 = MPI_Wtime();
+    if (in_pair) {
+      const int other = me == 0 ? peer : 0;
+      comm.send(other, kTag, std::move(m));
+      comm.recv_message(other, kTag);
+    }
+    double mine = in_pair ? MPI_Wtime() - t0 : 0.0, both = 0;
+    MPI_Allreduce(&mine, &both, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    t.push_back(both);
+  }
+  comm.flush();
+  return t;
+}
+
 // The fastest round trip: what the transport takes. No round trip can beat the transport, while
 // on a shared machine a rank that loses its core waits a time slice, and under a heavy load more
 // than a tenth of the round trips did (a tenth percentile of 0.67 ms for an 8-byte message).
@@ -137,8 +164,26 @@ NetFit measure_network(int rank, int size) {
       f.samples.push_back({{"peer", peer}, {"bytes", m}, {"one_way_s", t}});
       all.push_back({double(m), t});
     }
+  // Exchanges of the large messages the algorithms swap (1 MiB and above: the per-byte part, where
+  // the barrier's few microseconds of skew between the two ranks do not count).
+  std::vector<Sample> both;
+  for (int peer = 1; peer < size; ++peer)
+    for (std::size_t m : sizes) {
+      if (m < (1u << 20)) continue;
+      const int reps = 11;
+      exchange(comm, peer, m, 3);
+      const double t = low_percentile(exchange(comm, peer, m, reps));
+      if (rank != 0) continue;
+      f.exchanges.push_back({{"peer", peer}, {"bytes", m}, {"seconds", t}});
+      both.push_back({double(m), t});
+    }
   if (rank != 0) return f;
   fit_protocols(all, f);
+  double a = 0;
+  fit_line(both, a, f.both_busy_fit_s);
+  // Within the physical range: no faster a byte than one message alone, and no slower than half
+  // its rate (two copies sharing the memory system at worst take turns).
+  f.both_busy_per_byte_s = std::clamp(f.both_busy_fit_s, f.per_byte_s, 2 * f.per_byte_s);
   // OpenMPI's shared-memory transport switches from eager to rendezvous at its eager limit (4 KiB)
   // and sends large messages in fragments (32 KiB): the ranges SimGrid's smpi/or would take.
   f.ranges = piecewise(all, {0, 4097, 65536, 1e18});
