@@ -92,10 +92,15 @@ void emit(const SnapVertex* s, const SetupInput& in, bool textured, int width, i
   t.ymax = int(std::min<std::int64_t>(height - 1, floor_div(maxy - kSub / 2, kSub)));
   const std::int64_t minx = std::min({v[0].X, v[1].X, v[2].X});
   const std::int64_t maxx = std::max({v[0].X, v[1].X, v[2].X});
-  if (t.ymin > t.ymax || ceil_div(minx - kSub / 2, kSub) > width - 1 ||
-      floor_div(maxx - kSub / 2, kSub) < 0) {
+  const std::int64_t bx0 = ceil_div(minx - kSub / 2, kSub);
+  const std::int64_t bx1 = floor_div(maxx - kSub / 2, kSub);
+  if (t.ymin > t.ymax || bx0 > width - 1 || bx1 < 0) {
     ++c.triangles_culled; // touches no pixel centre on screen
     return;
+  }
+  if (width <= 32767) {
+    t.bx0 = std::int16_t(std::max<std::int64_t>(0, bx0));
+    t.bx1 = std::int16_t(std::min<std::int64_t>(width - 1, bx1));
   }
   for (int e = 0; e < 3; ++e) {
     const SnapVertex& p = v[e];

@@ -37,6 +37,9 @@ struct ScreenTriangle {
   std::uint32_t material = 0;
   std::int32_t tex = -1;   // index into TriangleBatch::tex, -1 when untextured
   int ymin = 0, ymax = -1; // rows whose centre lies inside the vertical extent, clamped
+  // Columns whose centre lies inside the horizontal extent, clamped to the screen; bx1 < bx0 when
+  // not known (a screen wider than 32767 pixels). In what was padding: the size is unchanged.
+  std::int16_t bx0 = 0, bx1 = -1;
   // Edge i: inside iff A*px + B*py + C - bias >= 0 at the fixed-point pixel centre (px, py).
   std::int64_t A[3], B[3], C[3];
   std::int64_t bias[3]; // 0 on top/left edges, 1 elsewhere (the top-left rule)
@@ -47,6 +50,8 @@ struct ScreenTriangle {
   // Returns false when the row holds no pixel of the triangle.
   bool span(int y, int width, int& x0, int& x1) const;
 };
+
+static_assert(sizeof(ScreenTriangle) == 216); // the simulated nodes' set-up records
 
 struct TriangleBatch {
   std::vector<ScreenTriangle> tris;
