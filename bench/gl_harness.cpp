@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <sstream>
 
 #define GL_GLEXT_PROTOTYPES 1
@@ -52,7 +53,14 @@ bool has_ext(const char* list, const char* name) {
   return false;
 }
 
+bool g_cpu_time = false; // set in the child process only
+
 double now_s() {
+  if (g_cpu_time) {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+  }
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
@@ -190,7 +198,7 @@ GlResult run_in_child(const GlScene& sc, double min_seconds) {
 
 } // namespace
 
-GlResult gl_time_frame(const GlScene& sc, int lp_threads, double min_seconds) {
+GlResult gl_time_frame(const GlScene& sc, int lp_threads, double min_seconds, bool cpu_time) {
   GlResult r;
   int fds[2];
   if (pipe(fds) != 0) {
@@ -209,6 +217,7 @@ GlResult gl_time_frame(const GlScene& sc, int lp_threads, double min_seconds) {
     setenv("LP_NUM_THREADS", std::to_string(lp_threads).c_str(), 1);
     setenv("LIBGL_ALWAYS_SOFTWARE", "1", 1);
     setenv("GALLIUM_DRIVER", "llvmpipe", 1);
+    g_cpu_time = cpu_time;
     const GlResult c = run_in_child(sc, min_seconds);
     std::ostringstream msg;
     msg.precision(17);

@@ -28,6 +28,8 @@ struct GlResult {
   std::string error;
 };
 
-GlResult gl_time_frame(const GlScene& scene, int lp_threads, double min_seconds);
+// cpu_time: frames timed in CPU time of the GL process (all its threads) instead of wall time.
+GlResult gl_time_frame(const GlScene& scene, int lp_threads, double min_seconds,
+                       bool cpu_time = false);
 
 } // namespace zc::bench

@@ -8,8 +8,9 @@
 // Every case repeats until at least S seconds (default 0.3) and reports the median frame time;
 // --frames F draws exactly F timed frames instead (repeatable instruction counts for a profiler);
 // --digest prints a hash of each case's colours, depths, ids and counters (renderers compared);
-// --cpu-time times zcube's frames in CPU time of the process (all threads) instead of wall time:
-// on a loaded machine, one thread's figure then leaves out the time other programs ran.
+// --cpu-time times the frames (zcube's and llvmpipe's) in CPU time of their process (all threads)
+// instead of wall time: on a loaded machine, one thread's figure then leaves out the time other
+// programs ran (with several threads it is work, not latency).
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -192,7 +193,7 @@ int main(int argc, char** argv) {
         if (want_digest) std::printf(" digest %016llx", static_cast<unsigned long long>(hash));
 #ifdef ZCUBE_GL_HARNESS
         if (gl) {
-          const bench::GlResult g = bench::gl_time_frame(gs, threads, min_s);
+          const bench::GlResult g = bench::gl_time_frame(gs, threads, min_s, g_cpu_time);
           if (g.ok) {
             const double lpx = double(g.fragments);
             std::printf(" %10.3f %10.2f %7.2f %7.2f %8.4f   [%s]\n", tris / g.seconds / 1e6,

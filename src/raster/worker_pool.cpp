@@ -10,6 +10,18 @@ namespace zc {
 
 namespace {
 
+// Waits until `a` no longer holds `old`: polls it for 20-40 microseconds (a phase of a small
+// frame is often shorter than the kernel takes to wake a sleeping thread), then sleeps on it.
+template <class T> void await_change(const std::atomic<T>& a, T old) {
+  for (int i = 0; i < 2000; ++i) {
+    if (a.load(std::memory_order_acquire) != old) return;
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+  }
+  a.wait(old);
+}
+
 // Every pool thread takes part in every run (those beyond n only acknowledge it), so a run is one
 // generation number up and one countdown to zero: no thread can miss a run or join the next early.
 class WorkerPool {
@@ -38,7 +50,7 @@ public:
     generation_.notify_all();
     f(0);
     for (int left; (left = pending_.load()) != 0;)
-      pending_.wait(left);
+      await_change(pending_, left);
     job_ = nullptr;
     return true;
   }
@@ -46,7 +58,7 @@ public:
 private:
   void serve(int w, std::uint32_t seen) {
     for (;;) {
-      generation_.wait(seen);
+      await_change(generation_, seen);
       seen = generation_.load();
       if (stop_) return;
       if (w < n_) (*job_)(w);
