@@ -174,8 +174,9 @@ def fill_idle(acts, total):
 
 
 def layout(fig, ax, tracks):
-    # Pixel rows (from the top of the PNG) of every node's row, for the tests.
-    fig.canvas.draw()
+    # Pixel rows (from the top of the PNG) of every node's row, for the tests. No draw first: the
+    # axes sit where subplots_adjust put them and their limits are set, so the transforms hold
+    # already (the same rows as after a draw, which rendered the whole figure once more).
     height = fig.get_size_inches()[1] * DPI
     rows = []
     for i, t in enumerate(tracks):
