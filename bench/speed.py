@@ -4,10 +4,14 @@
 memory), the aapc-hbp and node-initiated rows of bench/sim_scaling.py at 64 nodes, and zcube_bench
 against Mesa's llvmpipe. With --before OLD_ZCUBE every measurement alternates between the two
 binaries run by run (A B A B ...: the same load for both) and the ratio is taken pair by pair.
-Writes OUT/speed.csv (median, min and max of each figure) and OUT/README.md.
+Writes OUT/speed.csv (median, min and max of each figure) and OUT/README.md. `reproduce` is also
+taken apart: user and system CPU, minor page faults, the wall time of its stages (simulations;
+tables and calibration, the plots of the tables drawn meanwhile; the plots drawn after) and, with
+--before, whether both binaries wrote the same files.
 
     bench/speed.py [--zcube build/zcube] [--before OLD_ZCUBE] [--repeat 5] [--out results/speed]
                    [--bench build/zcube_bench] [--before-bench OLD_BENCH] [--skip reproduce,bench]
+                   [--only reproduce]
 
 Host wall-clock times: a shared machine's load is printed beside them (1-minute load average at
 the start and the end); compare the paired ratios, not the absolute times.
@@ -38,6 +42,45 @@ def timed(cmd, may_fail=False):
     return wall, ru.ru_maxrss / 1024, ru.ru_utime + ru.ru_stime
 
 
+def timed_stages(cmd):
+    """Runs `zcube reproduce`: (wall seconds, rusage, [(seconds since the start, stderr line)])."""
+    t0 = time.perf_counter()
+    p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    lines = [(time.perf_counter() - t0, line.rstrip("\n")) for line in p.stderr]
+    _, status, ru = os.wait4(p.pid, 0)
+    wall = time.perf_counter() - t0
+    p.stderr.close()
+    if status != 0:
+        sys.exit(f"{' '.join(cmd)} failed: {lines[-1][1] if lines else ''}")
+    return wall, ru, lines
+
+
+def reproduce_stages(lines, wall):
+    """Wall seconds of reproduce's stages from the times its progress lines arrived: the
+    simulations (until "N/N done"), the tables and the calibration (the plots of the tables are
+    drawn meanwhile, in one Python process), and the plots drawn after the calibration."""
+    done = next((t for t, l in lines if re.search(r"reproduce: (\d+)/\1 done", l)), None)
+    plots = next((t for t, l in lines if "drawing the plots" in l), wall)
+    if done is None:
+        return []
+    return [("simulations_s", done), ("calibration_s", plots - done), ("plots_after_s", wall - plots)]
+
+
+def same_tree(a, b):
+    """1 when every file under a and b is equal (host_cost.csv, the host's times, excepted)."""
+    def files(d):
+        return sorted(os.path.relpath(os.path.join(r, f), d) for r, _, fs in os.walk(d)
+                      for f in fs if f != "host_cost.csv")
+    if files(a) != files(b):
+        return 0
+    for f in files(a):
+        with open(os.path.join(a, f), "rb") as x, open(os.path.join(b, f), "rb") as y:
+            if x.read() != y.read():
+                print(f"reproduce: {f} differs between the binaries", flush=True)
+                return 0
+    return 1
+
+
 def run_cmd(z, algo, machine, nodes, scene, size, extra=()):
     return [z, "run", "--machine", machine, "--nodes", str(nodes), "--algorithm", algo,
             "--scene", scene, "--size", size] + list(extra)
@@ -50,10 +93,13 @@ def cases(tmp):
             *timed(cmd(z)))
 
     def reproduce(z):
-        out = os.path.join(tmp, "reproduce")
+        # Each binary writes a directory of its own, kept for the comparison of the outputs.
+        out = os.path.join(tmp, "reproduce-" + re.sub(r"\W", "_", os.path.abspath(z)))
         shutil.rmtree(out, ignore_errors=True)
-        w, m, c = timed([z, "reproduce", "--out", out])
-        return [("wall_s", w), ("peak_mib", m), ("cpu_s", c)]
+        w, ru, lines = timed_stages([z, "reproduce", "--out", out])
+        return [("wall_s", w), ("peak_mib", ru.ru_maxrss / 1024),
+                ("cpu_s", ru.ru_utime + ru.ru_stime), ("user_s", ru.ru_utime),
+                ("sys_s", ru.ru_stime), ("minor_faults", ru.ru_minflt)] + reproduce_stages(lines, w)
 
     png = os.path.join(tmp, "bone.png")
     return {
@@ -127,14 +173,17 @@ def main():
     p.add_argument("--repeat", type=int, default=5)
     p.add_argument("--out", default="results/speed")
     p.add_argument("--skip", default="", help="comma-separated: reproduce, bench, elastic")
+    p.add_argument("--only", default="", help="comma-separated: only the cases whose names hold "
+                   "one of these (e.g. reproduce)")
     a = p.parse_args()
     skip = set(filter(None, a.skip.split(",")))
+    only = set(filter(None, a.only.split(",")))
     binaries = [a.zcube] + ([a.before] if a.before else [])
     rows = []
     load0 = load()
     with tempfile.TemporaryDirectory() as tmp:
         for name, measure in cases(tmp).items():
-            if any(s in name for s in skip):
+            if any(s in name for s in skip) or (only and not any(s in name for s in only)):
                 continue
             n = a.repeat if name != "reproduce" and "1024" not in name else max(1, a.repeat // 2)
             if name == "run --list":
@@ -151,8 +200,15 @@ def main():
                                 "ratio_median": statistics.median(ratios) if ratios else ""})
                 rows.append(row)
                 print(row, flush=True)
+            if name == "reproduce" and a.before:
+                dirs = [os.path.join(tmp, "reproduce-" + re.sub(r"\W", "_", os.path.abspath(z)))
+                        for z in binaries]
+                row = {"case": name, "figure": "outputs_identical_to_before", "runs": 1,
+                       "median": same_tree(*dirs), "min": "", "max": ""}
+                rows.append(row)
+                print(row, flush=True)
         rows += goal_rows(rows)
-        if "bench" not in skip and os.path.exists(a.bench):
+        if "bench" not in skip and (not only or "bench" in only) and os.path.exists(a.bench):
             exes = [a.bench] + ([a.before_bench] if a.before_bench else [])
             tables = {e: [] for e in exes}
             for _ in range(max(1, a.repeat // 2)):
