@@ -64,11 +64,16 @@ std::uint64_t Framebuffer::merge(const Framebuffer& o) {
 }
 
 std::vector<std::uint8_t> Framebuffer::pack_locations(std::size_t first, std::size_t n) const {
-  std::vector<std::uint8_t> out(kLocationBytes * n);
-  if (n == 0) return out;
-  std::memcpy(out.data(), rgb_.data() + 3 * first, 3 * n);
-  std::memcpy(out.data() + 3 * n, depth_.data() + first, 4 * n);
-  std::memcpy(out.data() + 7 * n, ids_.data() + first, 4 * n);
+  // Appended, not cleared then overwritten: a band of a large picture is a hundred megabytes.
+  std::vector<std::uint8_t> out;
+  out.reserve(kLocationBytes * n);
+  const auto append = [&out](const void* from, std::size_t bytes) {
+    const auto* p = static_cast<const std::uint8_t*>(from);
+    out.insert(out.end(), p, p + bytes);
+  };
+  append(rgb_.data() + 3 * first, 3 * n);
+  append(depth_.data() + first, 4 * n);
+  append(ids_.data() + first, 4 * n);
   return out;
 }
 
@@ -76,12 +81,16 @@ std::size_t Framebuffer::merge_locations(const std::vector<std::uint8_t>& msg, s
   const std::size_t n = msg.size() / kLocationBytes;
   if (msg.size() % kLocationBytes != 0 || first + n > ids_.size())
     throw std::runtime_error("Framebuffer::merge_locations: message does not fit the buffer");
-  std::vector<float> z(n);
-  std::vector<std::uint32_t> id(n);
-  std::memcpy(z.data(), msg.data() + 3 * n, 4 * n);
-  std::memcpy(id.data(), msg.data() + 7 * n, 4 * n);
-  for (std::size_t k = 0; k < n; ++k)
-    test_and_write(first + k, z[k], id[k], msg.data() + 3 * k);
+  // Depths and ids read in place (unaligned loads), not copied out into arrays of their own first.
+  const std::uint8_t* zs = msg.data() + 3 * n;
+  const std::uint8_t* ids = msg.data() + 7 * n;
+  for (std::size_t k = 0; k < n; ++k) {
+    float z;
+    std::uint32_t id;
+    std::memcpy(&z, zs + 4 * k, 4);
+    std::memcpy(&id, ids + 4 * k, 4);
+    test_and_write(first + k, z, id, msg.data() + 3 * k);
+  }
   return n;
 }
 
