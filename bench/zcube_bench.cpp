@@ -5,12 +5,14 @@
 // same culling) with LP_NUM_THREADS = 1 and the core count, when the GL harness is built.
 //   usage: zcube_bench [--quick] [--no-gl] [--scene teapot|bone|bunny] [--size WxH]
 //                      [--threads N] [--min-seconds S] [--frames F] [--digest] [--cpu-time]
+//                      [--pairs P]
 // Every case repeats until at least S seconds (default 0.3) and reports the median frame time;
 // --frames F draws exactly F timed frames instead (repeatable instruction counts for a profiler);
 // --digest prints a hash of each case's colours, depths, ids and counters (renderers compared);
 // --cpu-time times the frames (zcube's and llvmpipe's) in CPU time of their process (all threads)
 // instead of wall time: on a loaded machine, one thread's figure then leaves out the time other
-// programs ran (with several threads it is work, not latency).
+// programs ran (with several threads it is work, not latency); --pairs P runs zcube and llvmpipe
+// alternately P times a case and reports the medians and the median of the P ratios.
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
@@ -76,6 +78,12 @@ double median_render(const Scene& s, int threads, double min_s, int frames, Coun
   return t[t.size() / 2];
 }
 
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
 std::string cpu_model() {
   std::ifstream f("/proc/cpuinfo");
   for (std::string line; std::getline(f, line);)
@@ -118,7 +126,7 @@ bench::GlScene gl_scene(const Scene& s) {
 int main(int argc, char** argv) {
   bool quick = false, gl = true, want_digest = false;
   double min_s = 0.3;
-  int frames = 0, only_threads = 0, only_w = 0, only_h = 0;
+  int frames = 0, only_threads = 0, only_w = 0, only_h = 0, pairs = 1;
   std::string only;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -134,6 +142,8 @@ int main(int argc, char** argv) {
       only = argv[++i];
     else if (a == "--min-seconds" && i + 1 < argc)
       min_s = std::atof(argv[++i]);
+    else if (a == "--pairs" && i + 1 < argc)
+      pairs = std::max(1, std::atoi(argv[++i]));
     else if (a == "--frames" && i + 1 < argc)
       frames = std::max(1, std::atoi(argv[++i]));
     else if (a == "--threads" && i + 1 < argc)
@@ -144,7 +154,7 @@ int main(int argc, char** argv) {
     else {
       std::fprintf(stderr, "usage: zcube_bench [--quick] [--no-gl] [--scene teapot|bone|bunny] "
                            "[--size WxH] [--threads N] [--min-seconds S] [--frames F] "
-                           "[--digest] [--cpu-time]\n");
+                           "[--digest] [--cpu-time] [--pairs P]\n");
       return 2;
     }
   }
@@ -186,19 +196,32 @@ int main(int argc, char** argv) {
       for (int threads : thread_counts) {
         Counters c;
         std::uint64_t hash = 0;
-        const double t = median_render(s, threads, min_s, frames, c, want_digest ? &hash : nullptr);
+        // --pairs P: zcube and llvmpipe alternately P times; the medians, and the median ratio.
+        std::vector<double> zt, lt, ratio;
+#ifdef ZCUBE_GL_HARNESS
+        bench::GlResult g;
+#endif
+        for (int r = 0; r < pairs; ++r) {
+          zt.push_back(median_render(s, threads, min_s, frames, c, want_digest ? &hash : nullptr));
+#ifdef ZCUBE_GL_HARNESS
+          if (!gl) continue;
+          g = bench::gl_time_frame(gs, threads, min_s, g_cpu_time);
+          if (!g.ok) break;
+          lt.push_back(g.seconds);
+          ratio.push_back(g.seconds / zt.back());
+#endif
+        }
+        const double t = median(zt);
         const double px = double(c.pixels_generated);
         std::printf("%-7s %4dx%-5d %3d %10.3f %10.2f", name.c_str(), w, h, threads, tris / t / 1e6,
                     px / t / 1e6);
         if (want_digest) std::printf(" digest %016llx", static_cast<unsigned long long>(hash));
 #ifdef ZCUBE_GL_HARNESS
         if (gl) {
-          const bench::GlResult g = bench::gl_time_frame(gs, threads, min_s, g_cpu_time);
           if (g.ok) {
-            const double lpx = double(g.fragments);
-            std::printf(" %10.3f %10.2f %7.2f %7.2f %8.4f   [%s]\n", tris / g.seconds / 1e6,
-                        lpx / g.seconds / 1e6, g.seconds / t, (px / t) / (lpx / g.seconds),
-                        lpx / px, g.renderer.c_str());
+            const double lpx = double(g.fragments), lt_med = median(lt), x = median(ratio);
+            std::printf(" %10.3f %10.2f %7.2f %7.2f %8.4f   [%s]\n", tris / lt_med / 1e6,
+                        lpx / lt_med / 1e6, x, x * px / lpx, lpx / px, g.renderer.c_str());
           } else {
             std::printf("   llvmpipe failed: %s\n", g.error.c_str());
           }

@@ -47,13 +47,13 @@ EdgeWalk::EdgeWalk(const ScreenTriangle& t, int e, int y, int stride) {
 bool NarrowScan::init(const ScreenTriangle& t, const RowSet& rows, int y, int yend) {
 #ifdef ZC_NARROW_SCAN_AVX2
   static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (!avx2 || t.bx1 < t.bx0 || t.bx1 - t.bx0 >= 16) return false;
+  if (!avx2 || t.bx1 < t.bx0 || t.bx1 - t.bx0 >= kMaxColumns) return false;
   x0_ = t.bx0;
   columns_ = t.bx1 - t.bx0 + 1;
   y_ = y;
   yend_ = yend;
   stride_ = rows.stride;
-  const std::int64_t lanes = columns_ > 8 ? 16 : 8; // columns evaluated, the box's and beyond
+  const std::int64_t lanes = (columns_ + 7) / 8 * 8; // columns evaluated, the box's and beyond
   const std::int64_t rows_n = (yend - y + stride_ - 1) / stride_;
   constexpr std::int64_t kLimit = std::int64_t(1) << 30;
   for (int e = 0; e < 3; ++e) {
@@ -80,37 +80,39 @@ bool NarrowScan::init(const ScreenTriangle& t, const RowSet& rows, int y, int ye
 #ifdef ZC_NARROW_SCAN_AVX2
 __attribute__((target("avx2"))) bool NarrowScan::next(SpanBatch& b) {
   b.n = 0;
+  const int nv = (columns_ + 7) / 8; // vectors of 8 columns
   const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
-  const __m256i eight = _mm256_set1_epi32(8);
   const __m256i minus1 = _mm256_set1_epi32(-1);
-  const __m256i live_lo = _mm256_cmpgt_epi32(_mm256_set1_epi32(columns_), lane);
-  const __m256i live_hi = _mm256_cmpgt_epi32(_mm256_set1_epi32(columns_ - 8), lane);
-  __m256i lo[3], hi[3], dy[3];
+  __m256i live[kMaxColumns / 8], ev[3][kMaxColumns / 8], dy[3];
+  for (int v = 0; v < nv; ++v)
+    live[v] = _mm256_cmpgt_epi32(_mm256_set1_epi32(columns_ - 8 * v), lane);
   for (int e = 0; e < 3; ++e) {
     const __m256i dx = _mm256_set1_epi32(dx_[e]);
-    lo[e] = _mm256_add_epi32(_mm256_set1_epi32(e_[e]), _mm256_mullo_epi32(dx, lane));
-    hi[e] = _mm256_add_epi32(lo[e], _mm256_mullo_epi32(dx, eight));
+    for (int v = 0; v < nv; ++v)
+      ev[e][v] = _mm256_add_epi32(
+          _mm256_set1_epi32(e_[e]),
+          _mm256_mullo_epi32(dx, _mm256_add_epi32(lane, _mm256_set1_epi32(8 * v))));
     dy[e] = _mm256_set1_epi32(dy_[e]);
   }
   for (; y_ < yend_ && b.n < SpanBatch::kMax; y_ += stride_) {
-    __m256i in_lo = live_lo, in_hi = live_hi;
-    for (int e = 0; e < 3; ++e) {
-      in_lo = _mm256_and_si256(in_lo, _mm256_cmpgt_epi32(lo[e], minus1));
-      in_hi = _mm256_and_si256(in_hi, _mm256_cmpgt_epi32(hi[e], minus1));
-      lo[e] = _mm256_add_epi32(lo[e], dy[e]);
-      hi[e] = _mm256_add_epi32(hi[e], dy[e]);
+    std::uint32_t m = 0;
+    for (int v = 0; v < nv; ++v) {
+      __m256i in = live[v];
+      for (int e = 0; e < 3; ++e) {
+        in = _mm256_and_si256(in, _mm256_cmpgt_epi32(ev[e][v], minus1));
+        ev[e][v] = _mm256_add_epi32(ev[e][v], dy[e]);
+      }
+      m |= std::uint32_t(_mm256_movemask_ps(_mm256_castsi256_ps(in))) << (8 * v);
     }
-    const unsigned m = unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(in_lo))) |
-                       unsigned(_mm256_movemask_ps(_mm256_castsi256_ps(in_hi))) << 8;
     if (m == 0) continue;
     b.y[b.n] = y_;
     b.x0[b.n] = x0_ + __builtin_ctz(m);
     b.x1[b.n] = x0_ + 31 - __builtin_clz(m);
     ++b.n;
   }
-  // The rows scanned so far are stored in e_ for a next call.
+  // Where the rows scanned so far leave the edge functions, for a next call.
   for (int e = 0; e < 3; ++e)
-    e_[e] = _mm256_extract_epi32(lo[e], 0);
+    e_[e] = _mm256_extract_epi32(ev[e][0], 0);
   return b.n > 0;
 }
 #else

@@ -53,12 +53,13 @@ struct SpanBatch {
   int y[kMax], x0[kMax], x1[kMax];
 };
 
-// The spans of a triangle at most 16 columns wide, without a division: its three edge functions
+// The spans of a triangle at most 32 columns wide, without a division: its three edge functions
 // evaluated at the pixel centres of its column box, 8 columns a vector instruction (AVX2), row
 // after row. The same integers as ScreenTriangle::span, so the same spans, when they fit 32 bits.
 class NarrowScan {
 public:
-  // False when `t` is wider than 16 columns or its column box unknown, when its edge functions
+  static constexpr int kMaxColumns = 32;
+  // False when `t` is wider than 32 columns or its column box unknown, when its edge functions
   // over the box and rows [y, yend) of `rows` exceed 2^30, or when the host has no AVX2.
   bool init(const ScreenTriangle& t, const RowSet& rows, int y, int yend);
   // The next non-empty spans in row order; false when none remain.
@@ -78,7 +79,7 @@ void for_each_span(const ScreenTriangle& t, const RowSet& rows, int width, F&& f
   int y = rows.first_from(t.ymin);
   const int yend = std::min(t.ymax + 1, rows.end);
   if (y >= yend) return;
-  if (t.bx1 >= t.bx0 && t.bx1 - t.bx0 < 16) {
+  if (t.bx1 >= t.bx0 && t.bx1 - t.bx0 < NarrowScan::kMaxColumns) {
     NarrowScan scan;
     if (scan.init(t, rows, y, yend)) {
       SpanBatch b;
