@@ -88,9 +88,9 @@ private:
       const double received = double(m.charged);
       n.memory.alloc(received, "receive buffer");
       const Bytes& b = m.payload;
-      ActivePixels got = deserialize_sparse(b.data(), b.size(), mine_.width, mine_.y0, mine_.y1);
-      load += got.count();
-      mine_ = merge_active(keep_, got, n.work);
+      std::uint64_t got = 0;
+      mine_ = merge_active_sparse(keep_, b.data(), b.size(), n.work, got);
+      load += got;
       n.memory.alloc(enc_.held(mine_, rec_), "merged pixels");
       n.memory.release(held_ + gathered_ + received);
       held_ = enc_.held(mine_, rec_);

@@ -176,6 +176,30 @@ void get_pixels(RecordReader& in, WinningPixel* out, std::size_t n) {
   for (std::size_t i = 0; i < n; ++i)
     out[i] = decode(q + i * kWirePixelBytes);
 }
+// merge_row with the second list still on the wire: each of its pixels decoded once, as reached.
+void merge_row_wire(const WinningPixel* a, const WinningPixel* ae, const std::uint8_t* b,
+                    const std::uint8_t* be, std::vector<WinningPixel>& out) {
+  WinningPixel bp{};
+  bool have = b < be;
+  if (have) bp = decode(b);
+  const auto next_b = [&] {
+    b += kWirePixelBytes;
+    have = b < be;
+    if (have) bp = decode(b);
+  };
+  while (a < ae || have) {
+    if (!have || (a < ae && a->x < bp.x)) {
+      out.push_back(*a++);
+    } else if (a == ae || bp.x < a->x) {
+      out.push_back(bp);
+      next_b();
+    } else {
+      out.push_back(in_front(bp.z, bp.id, a->z, a->id) ? bp : *a);
+      ++a;
+      next_b();
+    }
+  }
+}
 } // namespace
 
 // Layout: u32 row count; per non-empty row (u32 y, u32 count); then per pixel x(2) rgb(3) z(4)
@@ -311,6 +335,43 @@ ActivePixels merge_sparse(const std::vector<const std::vector<std::uint8_t>*>& m
   }
   for (; next <= y1; ++next)
     r.row_begin[std::size_t(next - y0)] = std::uint32_t(r.pixels.size());
+  return r;
+}
+
+ActivePixels merge_active_sparse(const ActivePixels& a, const std::uint8_t* data, std::size_t size,
+                                 Counters& c, std::uint64_t& received) {
+  RecordReader in(data, size, kWhat);
+  const std::uint32_t rows = in.get<std::uint32_t>();
+  in.require(rows, 8);
+  std::vector<std::pair<int, std::uint32_t>> heads(rows);
+  std::size_t total = 0;
+  int last = a.y0 - 1;
+  for (auto& [y, n] : heads) {
+    y = int(in.get<std::uint32_t>());
+    if (y < a.y0 || y >= a.y1 || y <= last) throw std::runtime_error("active pixels: bad row");
+    n = in.get<std::uint32_t>();
+    total += n;
+    last = y;
+  }
+  in.require(total, kWirePixelBytes);
+  const std::uint8_t* q = in.get_bytes(total * kWirePixelBytes);
+  ActivePixels r;
+  r.width = a.width;
+  r.y0 = a.y0;
+  r.y1 = a.y1;
+  r.row_begin.assign(a.row_begin.size(), 0);
+  r.pixels.reserve(a.pixels.size() + total);
+  std::size_t h = 0;
+  for (int y = a.y0; y < a.y1; ++y) {
+    const std::size_t k = std::size_t(y - a.y0);
+    const std::size_t n = h < heads.size() && heads[h].first == y ? heads[h++].second : 0;
+    merge_row_wire(a.pixels.data() + a.row_begin[k], a.pixels.data() + a.row_begin[k + 1], q,
+                   q + n * kWirePixelBytes, r.pixels);
+    q += n * kWirePixelBytes;
+    r.row_begin[k + 1] = std::uint32_t(r.pixels.size());
+  }
+  c.list_merges += a.pixels.size() + total;
+  received = total;
   return r;
 }
 

@@ -104,6 +104,11 @@ serialize_sparse_by_owner(const ActivePixels& a, const std::vector<int>& owner, 
 ActivePixels merge_sparse(const std::vector<const std::vector<std::uint8_t>*>& messages, int width,
                           int y0, int y1, std::vector<std::uint64_t>& pixel_counts);
 
+// merge_active(a, deserialize_sparse(data, size, a.width, a.y0, a.y1), c), the message's pixels
+// decoded as the merge reaches them instead of into a pixel set first; `received` is their count.
+ActivePixels merge_active_sparse(const ActivePixels& a, const std::uint8_t* data, std::size_t size,
+                                 Counters& c, std::uint64_t& received);
+
 // Writes a pixel set into a frame buffer holding (at least) its rows, without comparisons.
 void scatter_active(const ActivePixels& a, Framebuffer& fb);
 

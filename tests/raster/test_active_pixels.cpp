@@ -140,6 +140,38 @@ TEST(ActivePixels, WireFormatRoundTrips) {
   EXPECT_THROW(deserialize_sparse(bytes.data(), bytes.size() - 1, 64, 0, 48), std::runtime_error);
 }
 
+// Merging a message as it is read gives the pixels, counts and errors of deserialising it first.
+TEST(ActivePixels, MergeFromTheWireEqualsMergeAfterDeserialising) {
+  Scene s = random_scene(9, 100, 80);
+  NodeRenderer nr(s);
+  Counters c;
+  ActivePixels parts[2];
+  for (int k = 0; k < 2; ++k) {
+    TriangleBatch b = setup_range(s, nr, std::size_t(k), s.triangles.size(), 2);
+    parts[k] = zbuffer_spans(build_span_lists(b, s.width, s.height, c), b, nr.shade(), s.width, c);
+  }
+  const auto kept = [](int y) { return y % 3 != 1; };
+  const ActivePixels mine = select_rows(parts[0], kept);
+  const auto msg = serialize_sparse(select_rows(parts[1], kept));
+  Counters before, fused;
+  const ActivePixels want =
+      merge_active(mine, deserialize_sparse(msg.data(), msg.size(), 100, 0, 80), before);
+  std::uint64_t received = 0;
+  const ActivePixels got = merge_active_sparse(mine, msg.data(), msg.size(), fused, received);
+  EXPECT_EQ(received, select_rows(parts[1], kept).count());
+  EXPECT_EQ(fused.list_merges, before.list_merges);
+  EXPECT_EQ(got.row_begin, want.row_begin);
+  ASSERT_EQ(got.count(), want.count());
+  for (std::size_t i = 0; i < got.count(); ++i) {
+    EXPECT_EQ(got.pixels[i].x, want.pixels[i].x);
+    EXPECT_EQ(got.pixels[i].z, want.pixels[i].z);
+    EXPECT_EQ(got.pixels[i].id, want.pixels[i].id);
+    EXPECT_EQ(0, std::memcmp(got.pixels[i].rgb, want.pixels[i].rgb, 3));
+  }
+  EXPECT_THROW(merge_active_sparse(mine, msg.data(), msg.size() - 1, fused, received),
+               std::runtime_error);
+}
+
 // The all-to-all's shortcuts (one pass for every destination's message, one merge of many
 // messages) give exactly the bytes and pixels of the row-by-row originals.
 TEST(ActivePixels, ByOwnerMessagesAndManyWayMergeEqualTheOriginals) {
