@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <functional>
 
 #include "algo/composite.hpp"
 #include "algo/elastic_partition.hpp"
@@ -142,38 +143,66 @@ struct Probe {
   double min_s;
   std::vector<Loop> loops;
 
-  // Times fn (the median of calls repeated for at least min_s, three at least; `prep` runs before
-  // each call, untimed) and records the counters it leaves in c. Under callgrind every call's
-  // instructions are dumped apart, named after the loop (scripts/probe_instructions.py).
-  template <class Prep, class F>
-  void time(std::size_t block, const std::string& what, Counters& c, Prep&& prep, F&& fn) {
-    const std::string name = std::string(blocks()[block].name) + " " + what;
-#ifdef ZC_CALLGRIND
-    const std::string dump_name = "probe loop: " + name;
-#endif
+  struct Job {
+    std::size_t block;
+    std::string name;
+    std::function<void()> prep;
+    std::function<void(Counters&)> fn;
+    Counters c;
     std::vector<double> t;
-    double total = 0;
-    do {
-      prep();
-      c = Counters{};
-#ifdef ZC_CALLGRIND
-      CALLGRIND_ZERO_STATS;
-#endif
-      const double t0 = cpu_now();
-      fn();
-      const double s = cpu_now() - t0;
-#ifdef ZC_CALLGRIND
-      CALLGRIND_DUMP_STATS_AT(dump_name.c_str());
-#endif
-      t.push_back(s);
-      total += s;
-    } while (total < min_s || t.size() < 3);
-    std::sort(t.begin(), t.end());
-    loops.push_back({block, name, c, t[t.size() / 2], t.size()});
+  };
+  std::vector<Job> jobs;
+
+  // Registers a loop: fn timed, `prep` run before each call untimed, the counters fn counts
+  // recorded. run() times the registered loops.
+  void time(std::size_t block, const std::string& what, std::function<void()> prep,
+            std::function<void(Counters&)> fn) {
+    jobs.push_back({block,
+                    std::string(blocks()[block].name) + " " + what,
+                    std::move(prep),
+                    std::move(fn),
+                    {},
+                    {}});
   }
-  template <class F> void time(std::size_t block, const std::string& what, Counters& c, F&& fn) {
+  void time(std::size_t block, const std::string& what, std::function<void(Counters&)> fn) {
     time(
-        block, what, c, [] {}, fn);
+        block, what, [] {}, std::move(fn));
+  }
+
+  // The registered loops in turn, three rounds, each loop called in a round until it has run a
+  // third of min_s: a change of the machine's load meanwhile falls on all of them, not on the
+  // loops timed last (the blocks subtract one loop's costs from another's). A loop's time is the
+  // median of its calls. Under callgrind every call's instructions are dumped apart, named after
+  // the loop (scripts/probe_instructions.py).
+  void run() {
+    constexpr int kRounds = 3;
+    for (int r = 0; r < kRounds; ++r)
+      for (Job& j : jobs) {
+#ifdef ZC_CALLGRIND
+        const std::string dump_name = "probe loop: " + j.name;
+#endif
+        double spent = 0;
+        do {
+          j.prep();
+          j.c = Counters{};
+#ifdef ZC_CALLGRIND
+          CALLGRIND_ZERO_STATS;
+#endif
+          const double t0 = cpu_now();
+          j.fn(j.c);
+          const double s = cpu_now() - t0;
+#ifdef ZC_CALLGRIND
+          CALLGRIND_DUMP_STATS_AT(dump_name.c_str());
+#endif
+          j.t.push_back(s);
+          spent += s;
+        } while (spent < min_s / kRounds);
+      }
+    for (Job& j : jobs) {
+      std::sort(j.t.begin(), j.t.end());
+      loops.push_back({j.block, j.name, j.c, j.t[j.t.size() / 2], j.t.size()});
+    }
+    jobs.clear();
   }
 };
 
@@ -201,33 +230,44 @@ void render_loops(Probe& p, const Picture& pic, bool kurc) {
   const int size = pic.size;
   const NodeRenderer nr(s);
   std::vector<ProjectedVertex> pv(s.vertices.size());
-  Counters c;
-  p.time(kProjectLoops, pic.name, c, [&] {
-    for (std::size_t i = 0; i < pv.size(); ++i)
-      pv[i] = nr.project(s.vertices[i], c);
-  });
-  auto setup = [&](std::size_t i, TriangleBatch& batch, Counters& cc) {
-    nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, batch, cc);
-  };
-  TriangleBatch one;
-  p.time(kSetupLoops, pic.name, c, [&] {
-    for (std::size_t i = 0; i < s.triangles.size(); ++i) {
-      one.clear();
-      setup(i, one, c);
-    }
-  });
+  Counters ignored;
+  for (std::size_t i = 0; i < pv.size(); ++i)
+    pv[i] = nr.project(s.vertices[i], ignored);
+  // The inputs of the later loops, made once: every triangle set up, the span lists, the active
+  // pixels and their odd and even rows, the frame buffers.
+  TriangleBatch all;
+  for (std::size_t i = 0; i < s.triangles.size(); ++i)
+    nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, all, ignored);
+  SpanLists lists = build_span_lists(all, size, size, ignored);
+  ActivePixels wpa = zbuffer_spans(lists, all, nr.shade(), size, ignored);
+  const ActivePixels odd = select_rows(wpa, [](int y) { return y % 2; });
+  const ActivePixels even = select_rows(wpa, [](int y) { return y % 2 == 0; });
   Framebuffer fb = nr.make_framebuffer(RowSet::all(size));
+  Framebuffer picture = kurc ? nr.make_framebuffer(RowSet::all(size)) : Framebuffer{};
+  std::vector<ProjectedVertex> pv2(pv.size());
+  p.time(kProjectLoops, pic.name, [&](Counters& c) {
+    for (std::size_t i = 0; i < pv2.size(); ++i)
+      pv2[i] = nr.project(s.vertices[i], c);
+  });
+  TriangleBatch one;
+  auto setup = [&](std::size_t i, Counters& c) {
+    one.clear();
+    nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, one, c);
+  };
+  p.time(kSetupLoops, pic.name, [&](Counters& c) {
+    for (std::size_t i = 0; i < s.triangles.size(); ++i)
+      setup(i, c);
+  });
   p.time(
-      kZbufferLoops, pic.name, c, [&] { fb.clear(nr.background()); },
-      [&] {
+      kZbufferLoops, pic.name, [&] { fb.clear(nr.background()); },
+      [&](Counters& c) {
         for (std::size_t i = 0; i < s.triangles.size(); ++i) {
-          one.clear();
-          setup(i, one, c);
+          setup(i, c);
           draw_batch(one, nr.shade(), fb, c);
         }
       });
   std::vector<RowExtent> ext(s.triangles.size());
-  p.time(kEstimateLoops, pic.name, c, [&] {
+  p.time(kEstimateLoops, pic.name, [&](Counters& c) {
     for (std::size_t i = 0; i < s.triangles.size(); ++i) {
       const Triangle& t = s.triangles[i];
       const ProjectedVertex* p3[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
@@ -237,82 +277,80 @@ void render_loops(Probe& p, const Picture& pic, bool kurc) {
     c.triangles_estimated = s.triangles.size();
     c.rows_scanned = rows.size();
   });
-  TriangleBatch all;
-  Counters ignored;
-  for (std::size_t i = 0; i < s.triangles.size(); ++i)
-    setup(i, all, ignored);
-  SpanLists lists;
-  p.time(kSpanListLoops, pic.name, c, [&] { lists = build_span_lists(all, size, size, c); });
-  ActivePixels wpa;
-  p.time(kActiveLoops, pic.name, c, [&] { wpa = zbuffer_spans(lists, all, nr.shade(), size, c); });
-  if (!kurc) return;
-  const ActivePixels odd = select_rows(wpa, [](int y) { return y % 2; });
-  const ActivePixels even = select_rows(wpa, [](int y) { return y % 2 == 0; });
-  p.time(kListMergeLoops, pic.name, c, [&] { (void)merge_active(odd, even, c); });
-  // Kurc et al.'s output (compositing/gather.hpp): the final pixels packed into a message, which
-  // node 0 unpacks and pastes into the picture.
-  Framebuffer picture = nr.make_framebuffer(RowSet::all(size));
-  p.time(kOutputLoops, pic.name, c, [&] {
-    std::vector<Message> parts;
-    parts.push_back(
-        compositing::pack_pixels(wpa, compositing::sparse_message, kurc_pixel_records(), c));
-    compositing::paste(parts, picture, size, c);
-  });
+  p.time(kSpanListLoops, pic.name,
+         [&](Counters& c) { (void)build_span_lists(all, size, size, c); });
+  p.time(kActiveLoops, pic.name,
+         [&](Counters& c) { (void)zbuffer_spans(lists, all, nr.shade(), size, c); });
+  if (kurc) {
+    p.time(kListMergeLoops, pic.name, [&](Counters& c) { (void)merge_active(odd, even, c); });
+    // Kurc et al.'s output (compositing/gather.hpp): the final pixels packed into a message, which
+    // node 0 unpacks and pastes into the picture.
+    p.time(kOutputLoops, pic.name, [&](Counters& c) {
+      std::vector<Message> parts;
+      parts.push_back(
+          compositing::pack_pixels(wpa, compositing::sparse_message, kurc_pixel_records(), c));
+      compositing::paste(parts, picture, size, c);
+    });
+  }
+  p.run();
 }
 
 // Blazek's nodes: the thesis's spheres (the workloads' triangles, as few or as many a sphere)
 // tessellated, then set up and drawn into the node's frame buffer.
 void sphere_loops(Probe& p, const Picture& pic) {
   const Scene& s = pic.s;
-  Counters c;
-  p.time(kTessellateLoops, pic.name, c, [&] {
+  const NodeRenderer nr(s);
+  std::vector<ProjectedVertex> pv(s.vertices.size());
+  Counters ignored;
+  for (std::size_t i = 0; i < pv.size(); ++i)
+    pv[i] = nr.project(s.vertices[i], ignored);
+  Framebuffer fb = nr.make_framebuffer(RowSet::all(pic.size));
+  TriangleBatch one;
+  p.time(kTessellateLoops, pic.name, [&](Counters& c) {
     for (const ObjectDesc& d : s.objects)
       if (d.kind != "mesh") c.triangles_tessellated += tessellate(d).triangles.size();
   });
-  const NodeRenderer nr(s);
-  std::vector<ProjectedVertex> pv(s.vertices.size());
-  for (std::size_t i = 0; i < pv.size(); ++i)
-    pv[i] = nr.project(s.vertices[i], c);
-  TriangleBatch one;
-  p.time(kSetupLoops, pic.name, c, [&] {
+  p.time(kSetupLoops, pic.name, [&](Counters& c) {
     for (std::size_t i = 0; i < s.triangles.size(); ++i) {
       one.clear();
       nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, one, c);
     }
   });
-  Framebuffer fb = nr.make_framebuffer(RowSet::all(pic.size));
   p.time(
-      kZbufferLoops, pic.name, c, [&] { fb.clear(nr.background()); },
-      [&] {
+      kZbufferLoops, pic.name, [&] { fb.clear(nr.background()); },
+      [&](Counters& c) {
         for (std::size_t i = 0; i < s.triangles.size(); ++i) {
           one.clear();
           nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, one, c);
           draw_batch(one, nr.shade(), fb, c);
         }
       });
+  p.run();
 }
 
 // Frame buffers: a new one (allocation and clear: what make_framebuffer costs), locations packed
 // into a message and merged back (the full z-buffer merges).
 void buffer_loops(Probe& p, int size, bool merges) {
   const std::string name = std::to_string(size) + "x" + std::to_string(size);
-  Counters c;
-  p.time(kClearLoops, name, c, [&] {
+  p.time(kClearLoops, name, [&](Counters& c) {
     Framebuffer fb(size, RowSet::all(size), glm::vec3(0));
     c.pixels_cleared = fb.pixel_count();
   });
-  if (!merges) return;
-  Framebuffer a(size, RowSet::all(size), glm::vec3(0)), b = a;
-  for (std::size_t i = 0; i < b.depth().size(); i += 3) {
-    b.depth()[i] = float(i % 7) * 0.1f;
-    b.ids()[i] = std::uint32_t(i);
-  }
+  Framebuffer a, b;
   std::vector<std::uint8_t> msg;
-  p.time(kPackingLoops, name, c, [&] {
+  if (merges) {
+    a = Framebuffer(size, RowSet::all(size), glm::vec3(0));
+    b = a;
+    for (std::size_t i = 0; i < b.depth().size(); i += 3) {
+      b.depth()[i] = float(i % 7) * 0.1f;
+      b.ids()[i] = std::uint32_t(i);
+    }
     msg = b.pack_locations(0, b.pixel_count());
-    c.bytes_packed = msg.size();
-  });
-  p.time(kMergeLoops, name, c, [&] { c.merge_ops = a.merge_locations(msg, 0); });
+    p.time(kPackingLoops, name,
+           [&](Counters& c) { c.bytes_packed = b.pack_locations(0, b.pixel_count()).size(); });
+    p.time(kMergeLoops, name, [&](Counters& c) { c.merge_ops = a.merge_locations(msg, 0); });
+  }
+  p.run();
 }
 
 // Solves the blocks in order: a loop's time less its groups measured before, divided among the
@@ -389,7 +427,7 @@ std::vector<double> solve(const std::vector<Loop>& loops, nlohmann::json& log) {
 
 CostTable measure_cpu(const std::string& root, double min_seconds, nlohmann::json& log) {
   premap_heap(std::size_t(1) << 30);
-  Probe p{min_seconds, {}};
+  Probe p{min_seconds, {}, {}};
   // The bone's 78,738 triangles (a dense mesh as the bunny's, on no workload) at the workloads'
   // sizes and triangle sizes: 512 and 1024 (elastic's bunny at 1024x1024: 2-4 rows and 2 pixels a
   // span), 2048 and 4096 (Kurc's bunny at 5120x5120: 20 rows, 8 pixels a span; a frame buffer of
