@@ -70,6 +70,8 @@ public:
   // the host (node 0 for methods without one) is entitled to read: the global view is a
   // convenience of the simulator, not a shared memory of the machine.
   virtual const Scene& scene() const = 0;
+  // scene_facts(scene()), worked out once for all the nodes that share the scene.
+  virtual const SceneFacts& scene_facts() const = 0;
   virtual const AlgorithmOptions& options() const = 0;
 
   // Charges the counted operations to this node's CPU: virtual time advances by

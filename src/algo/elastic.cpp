@@ -74,7 +74,7 @@ multiscatter_triangles(NodeContext& ctx, const LocalScene& local,
   using Record = typename Vertices::Record;
   auto ph = ctx.phase("multiscatter_triangles");
   const int P = ctx.nodes();
-  const bool with_material = materials_travel(ctx.scene());
+  const bool with_material = materials_travel(ctx);
   const std::uint32_t material =
       ctx.scene().triangles.empty() ? 0 : ctx.scene().triangles.front().material;
   const std::size_t tri_bytes = kTriangleWireBytes + (with_material ? 4 : 0);
@@ -152,7 +152,8 @@ template <class Vertices>
 void render_picture(NodeContext& ctx, const LocalScene& local, int frame, bool gather) {
   const Scene& scene = ctx.scene();
   const int frames = ctx.options().frames, r = ctx.rank();
-  const NodeRenderer nr(scene, camera_at_frame(scene.camera, frame, frames));
+  const NodeRenderer nr(scene, camera_at_frame(scene.camera, frame, frames),
+                        ctx.scene_facts().bounds);
   const auto my_pv = project_vertices(ctx, nr, local.vertices);
   Vertices pv;
   pv.exchange(ctx, local, my_pv); // MultiBroadcast(Projected Vertices), or §7's request
@@ -163,7 +164,7 @@ void render_picture(NodeContext& ctx, const LocalScene& local, int frame, bool g
   const auto slice = multiscatter_triangles(ctx, local, local_load.extents, bounds, pv);
   Framebuffer fb = zbuffer_slice(ctx, nr, local, slice, pv, RowSet::band(bounds[r], bounds[r + 1]));
   const std::size_t tri_record =
-      triangle_wire_bytes(scene) - kTriangleWireBytes + records::charles::kTriangle;
+      triangle_wire_bytes(ctx) - kTriangleWireBytes + records::charles::kTriangle;
   const double held = double(fb.pixel_count() * records::charles::kZbufferLocation) + pv.bytes +
                       double(slice.size() * (tri_record + Vertices::kExtraRecordBytes));
   output_picture(ctx, std::move(fb), global_load,
@@ -193,8 +194,7 @@ void elastic_node(NodeContext& ctx) {
     ctx.metrics()["wire_bytes"] = {
         {"vertex", records::charles::kVertex},
         {"projected_vertex", records::charles::kProjectedVertex},
-        {"triangle",
-         triangle_wire_bytes(ctx.scene()) - kTriangleWireBytes + records::charles::kTriangle},
+        {"triangle", triangle_wire_bytes(ctx) - kTriangleWireBytes + records::charles::kTriangle},
         {"load_entry", records::charles::kLoadEntry}};
     ctx.metrics()["payload_bytes"] = {{"projected_vertex", sizeof(ProjectedVertex)}};
   }

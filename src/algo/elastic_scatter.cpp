@@ -35,7 +35,7 @@ std::vector<TriangleRecord> scatter_triangles(NodeContext& ctx, const Scene& sce
   auto ph = ctx.phase("scatter_triangles");
   const int P = ctx.nodes();
   const std::size_t T = scene.triangles.size();
-  const bool with_material = materials_travel(scene);
+  const bool with_material = materials_travel(ctx);
   const std::uint32_t material = scene.triangles.empty() ? 0 : scene.triangles.front().material;
   const std::size_t wire = kTriangleWireBytes + (with_material ? 4 : 0);
   std::vector<Bytes> parts;

@@ -1,18 +1,17 @@
 #include "algo/elastic_wire.hpp"
 
+#include <bit>
 #include <cstring>
 #include <stdexcept>
 
 namespace zc::elastic {
 
-bool materials_travel(const Scene& s) {
-  for (const Triangle& t : s.triangles)
-    if (t.material != s.triangles.front().material) return true;
-  return false;
+bool materials_travel(const NodeContext& ctx) {
+  return ctx.scene_facts().several_materials;
 }
 
-std::size_t triangle_wire_bytes(const Scene& s) {
-  return kTriangleWireBytes + (materials_travel(s) ? 4 : 0);
+std::size_t triangle_wire_bytes(const NodeContext& ctx) {
+  return kTriangleWireBytes + (materials_travel(ctx) ? 4 : 0);
 }
 
 void append_triangle(Bytes& b, const TriangleRecord& t, bool with_material) {
@@ -38,8 +37,12 @@ Bytes selection_header(std::size_t n, const std::vector<std::uint32_t>& picked) 
 std::vector<std::uint32_t> read_selection(RecordReader& in, std::size_t n) {
   const std::uint8_t* mask = in.get_bytes((n + 7) / 8);
   std::vector<std::uint32_t> picked;
-  for (std::size_t i = 0; i < n; ++i)
-    if (mask[i / 8] & (1u << (i % 8))) picked.push_back(std::uint32_t(i));
+  // Byte by byte, set bits only: a message usually carries few of the block's triangles.
+  for (std::size_t byte = 0; byte < (n + 7) / 8; ++byte)
+    for (unsigned bits = mask[byte]; bits != 0; bits &= bits - 1) {
+      const std::size_t i = byte * 8 + std::size_t(std::countr_zero(bits));
+      if (i < n) picked.push_back(std::uint32_t(i));
+    }
   return picked;
 }
 

@@ -17,9 +17,9 @@ constexpr std::size_t kTriangleWireBytes = 12;
 
 // Whether the triangles' material indices travel: only when the scene's triangles use more than
 // one (otherwise every node knows the one colour from the scene description, as the camera).
-bool materials_travel(const Scene& s);
+bool materials_travel(const NodeContext& ctx);
 // Bytes of one triangle on the wire in this scene (12, or 16 with its material).
-std::size_t triangle_wire_bytes(const Scene& s);
+std::size_t triangle_wire_bytes(const NodeContext& ctx);
 
 // Appends triangle t's wire form (vertex numbers, then the material when `with_material`).
 void append_triangle(Bytes& b, const TriangleRecord& t, bool with_material);

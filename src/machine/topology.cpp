@@ -30,6 +30,7 @@ int log2_exact(int p) {
 
 std::vector<std::pair<int, int>> route(Topology t, int nodes, int src, int dst) {
   std::vector<std::pair<int, int>> r;
+  r.reserve(std::size_t(hops(t, nodes, src, dst))); // one allocation: a route is built per message
   if (t == Topology::Cube) {
     int at = src;
     for (unsigned diff = unsigned(src ^ dst); diff; diff &= diff - 1) {

@@ -13,7 +13,10 @@ namespace zc {
 NodeRenderer::NodeRenderer(const Scene& scene) : NodeRenderer(scene, scene.camera) {}
 
 NodeRenderer::NodeRenderer(const Scene& scene, const Camera& camera)
-    : view_(make_view(scene, camera)), shade_(ShadeContext::of(scene)),
+    : NodeRenderer(scene, camera, scene_bounds(scene)) {}
+
+NodeRenderer::NodeRenderer(const Scene& scene, const Camera& camera, const Bounds& bounds)
+    : view_(make_view(scene, camera, bounds)), shade_(ShadeContext::of(scene)),
       background_(scene.background), cull_back_(scene.cull == CullMode::Back) {}
 
 void NodeRenderer::setup_projected(std::uint32_t id, const Triangle& tri,

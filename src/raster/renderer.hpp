@@ -19,6 +19,8 @@ class NodeRenderer {
 public:
   explicit NodeRenderer(const Scene& scene);
   NodeRenderer(const Scene& scene, const Camera& camera); // another frame's camera
+  // The same with the scene's bounds already known (scene_bounds): no pass over its vertices.
+  NodeRenderer(const Scene& scene, const Camera& camera, const Bounds& bounds);
 
   const View& view() const { return view_; }
   const ShadeContext& shade() const { return shade_; }

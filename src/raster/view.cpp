@@ -27,10 +27,14 @@ View make_view(const Scene& scene) {
 }
 
 View make_view(const Scene& scene, const Camera& camera) {
+  return make_view(scene, camera, scene_bounds(scene));
+}
+
+View make_view(const Scene& scene, const Camera& camera, const Bounds& bounds) {
   View v;
   v.width = scene.width;
   v.height = scene.height;
-  resolve_clip_planes(camera, scene_bounds(scene), v.znear, v.zfar);
+  resolve_clip_planes(camera, bounds, v.znear, v.zfar);
   const double aspect = static_cast<double>(scene.width) / std::max(1, scene.height);
   v.view_proj = projection_matrix(camera, aspect, v.znear, v.zfar) * view_matrix(camera);
   v.ambient = scene.ambient;

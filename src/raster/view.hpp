@@ -34,5 +34,7 @@ struct View {
 View make_view(const Scene& scene);
 // The same with another camera (frames of an animation).
 View make_view(const Scene& scene, const Camera& camera);
+// The same with the scene's bounds already known (scene_bounds).
+View make_view(const Scene& scene, const Camera& camera, const Bounds& bounds);
 
 } // namespace zc

@@ -4,6 +4,12 @@
 
 namespace zc {
 
+const SceneFacts& RecordingContext::scene_facts() const {
+  if (facts_) return *facts_;
+  if (!own_facts_) own_facts_ = zc::scene_facts(scene_);
+  return *own_facts_;
+}
+
 void RecordingContext::charge(const Counters& w) {
   work_ += w;
   phase_work_[open_.empty() ? std::string() : open_.back().first] += w;

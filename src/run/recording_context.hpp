@@ -5,6 +5,7 @@
 // says what charging work costs (spend): the simulator sleeps for the modelled time, a real
 // machine has already spent it.
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,13 +16,17 @@ namespace zc {
 
 class RecordingContext : public NodeContext {
 public:
+  // `facts`: scene_facts(scene) when the caller has worked them out for several contexts (the
+  // simulator's nodes share one scene); null to work them out on first use.
   RecordingContext(Comm& comm, NodeStats& stats, const Scene& scene, const AlgorithmOptions& opt,
-                   double memory_capacity, std::vector<FrameImage>& images)
+                   double memory_capacity, std::vector<FrameImage>& images,
+                   const SceneFacts* facts = nullptr)
       : comm_(comm), stats_(stats), scene_(scene), opt_(opt), memory_capacity_(memory_capacity),
-        images_(images) {}
+        images_(images), facts_(facts) {}
 
   Comm& comm() override { return comm_; }
   const Scene& scene() const override { return scene_; }
+  const SceneFacts& scene_facts() const override;
   const AlgorithmOptions& options() const override { return opt_; }
   void charge(const Counters& work) final;
   void phase_begin(const std::string& name) final;
@@ -51,6 +56,8 @@ private:
   const AlgorithmOptions& opt_;
   double memory_capacity_;
   std::vector<FrameImage>& images_;
+  const SceneFacts* facts_;
+  mutable std::optional<SceneFacts> own_facts_; // when none were given
   Counters work_;
   std::vector<std::pair<std::string, double>> open_;
   std::map<std::string, double> phase_totals_;

@@ -99,4 +99,13 @@ struct Scene {
 // The bounding box of the scene's vertices.
 Bounds scene_bounds(const Scene& s);
 
+// What a node program derives from the whole scene (its bounds for the clip planes, whether its
+// triangles use more than one material). The simulator's nodes share one scene, so it works this
+// out once for all of them (NodeContext::scene_facts) instead of once a node.
+struct SceneFacts {
+  Bounds bounds;
+  bool several_materials = false;
+};
+SceneFacts scene_facts(const Scene& s);
+
 } // namespace zc

@@ -9,4 +9,15 @@ Bounds scene_bounds(const Scene& s) {
   return b;
 }
 
+SceneFacts scene_facts(const Scene& s) {
+  SceneFacts f;
+  f.bounds = scene_bounds(s);
+  for (const Triangle& t : s.triangles)
+    if (t.material != s.triangles.front().material) {
+      f.several_materials = true;
+      break;
+    }
+  return f;
+}
+
 } // namespace zc

@@ -8,9 +8,10 @@ namespace zc {
 
 class SimContext final : public RecordingContext {
 public:
-  SimContext(SimComm& comm, NodeStats& stats, const Scene& scene, const AlgorithmOptions& opt,
-             CostTable cost, double memory_bytes, std::vector<FrameImage>& images)
-      : RecordingContext(comm, stats, scene, opt, memory_bytes, images), cost_(cost) {}
+  SimContext(SimComm& comm, NodeStats& stats, const Scene& scene, const SceneFacts& facts,
+             const AlgorithmOptions& opt, CostTable cost, double memory_bytes,
+             std::vector<FrameImage>& images)
+      : RecordingContext(comm, stats, scene, opt, memory_bytes, images, &facts), cost_(cost) {}
 
 protected:
   void spend(const Counters& work) override;

@@ -99,13 +99,16 @@ void SimNetwork::add_hold(std::vector<Hold>& out, std::vector<std::pair<int, int
   if (fid_ != Fidelity::Circuit) chans.clear();
   if (chans.empty() && h.seconds <= 0) return; // nothing to wait for, nothing to acquire
   // The global order of acquisition (dimension order on the cube: the e-cube path order), which
-  // rules out deadlock between circuits.
+  // rules out deadlock between circuits. Both orders are total on a path's distinct channels, and
+  // an e-cube route already comes in dimension order: sorted only when it is not.
   if (topo_ == Topology::Cube) {
-    std::stable_sort(chans.begin(), chans.end(), [](auto x, auto y) {
+    const auto by_dimension = [](auto x, auto y) {
       const int dx = x.first ^ x.second, dy = y.first ^ y.second;
       return dx != dy ? dx < dy : x < y;
-    });
-  } else {
+    };
+    if (!std::is_sorted(chans.begin(), chans.end(), by_dimension))
+      std::sort(chans.begin(), chans.end(), by_dimension);
+  } else if (!std::is_sorted(chans.begin(), chans.end())) {
     std::sort(chans.begin(), chans.end());
   }
   h.channels = std::move(chans);
