@@ -1,5 +1,7 @@
 #include "raster/worker_pool.hpp"
 
+#include <unistd.h>
+
 #include <atomic>
 #include <cstdint>
 #include <mutex>
@@ -26,15 +28,6 @@ template <class T> void await_change(const std::atomic<T>& a, T old) {
 // generation number up and one countdown to zero: no thread can miss a run or join the next early.
 class WorkerPool {
 public:
-  ~WorkerPool() {
-    const std::lock_guard<std::mutex> lock(run_mutex_);
-    stop_ = true;
-    generation_.fetch_add(1);
-    generation_.notify_all();
-    for (auto& t : threads_)
-      t.join();
-  }
-
   // False when another thread is running the pool.
   bool try_run(int n, const std::function<void(int)>& f) {
     const std::unique_lock<std::mutex> lock(run_mutex_, std::try_to_lock);
@@ -60,7 +53,6 @@ private:
     for (;;) {
       await_change(generation_, seen);
       seen = generation_.load();
-      if (stop_) return;
       if (w < n_) (*job_)(w);
       if (pending_.fetch_sub(1) == 1) pending_.notify_one();
     }
@@ -72,7 +64,6 @@ private:
   std::atomic<int> pending_{0};
   const std::function<void(int)>* job_ = nullptr;
   int n_ = 0;
-  bool stop_ = false;
 };
 
 } // namespace
@@ -82,8 +73,11 @@ void run_on_workers(int n, const std::function<void(int)>& f) {
     f(0);
     return;
   }
-  static WorkerPool pool;
-  if (pool.try_run(n, f)) return;
+  // Never destroyed (its threads end with the process), and only used by the process that made
+  // it: a child forked after it started has none of its threads.
+  static WorkerPool& pool = *new WorkerPool;
+  static const pid_t owner = getpid();
+  if (getpid() == owner && pool.try_run(n, f)) return;
   std::vector<std::thread> ts;
   for (int w = 1; w < n; ++w)
     ts.emplace_back([&f, w] { f(w); });

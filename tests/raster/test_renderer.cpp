@@ -1,4 +1,7 @@
 // Reference renderer: fill rule, clipping, depth tie-break, thread independence, counters.
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <set>
 #include <thread>
@@ -305,6 +308,19 @@ TEST(Raster, ConcurrentRendersShareNoThreads) {
   other.join();
   EXPECT_EQ(a, h);
   EXPECT_EQ(b, h);
+}
+
+TEST(Raster, ForkedChildRendersOnThreadsOfItsOwn) {
+  // A process forked after the renderer's thread pool started has none of its threads: its
+  // renders must not wait for them.
+  const Scene s = spheres(120, 90);
+  const std::string h = image_sha256(render_scene(s, 2).image);
+  const pid_t pid = fork();
+  if (pid == 0) _exit(image_sha256(render_scene(s, 2).image) == h ? 0 : 1);
+  int status = 0;
+  ASSERT_EQ(waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
 }
 
 TEST(Raster, RowSubsetsReproduceTheFullImage) {
