@@ -27,15 +27,16 @@ Delivery::Delivery(SimNetwork& net, Fidelity fidelity, std::vector<sg::Host*> ho
 // block itself is kept, not lost (the semaphore counts it). SimGrid wakes a timed wait at
 // now + (deadline - now), which may differ from the deadline in the last bit: the caller treats
 // the deadline itself as reached, so that no wait is ever repeated.
-double Delivery::block(Waiter& w, double deadline) {
+double Delivery::block(Waiter& w, double deadline, double& now) {
   w.blocked = true;
   w.deadline = deadline;
   bool reached = false;
   if (deadline == kNotYet)
     w.wakeup->acquire();
   else
-    reached = w.wakeup->acquire_timeout(std::max(0.0, deadline - sg::Engine::get_clock()));
+    reached = w.wakeup->acquire_timeout(std::max(0.0, deadline - now));
   w.blocked = false;
+  now = sg::Engine::get_clock();
   return reached ? deadline : kNever;
 }
 
@@ -50,30 +51,32 @@ void Delivery::notify(Waiter& w, const Transit& m) {
 // zcube's state is consistent again (flush_wakeups at the end of each operation).
 void Delivery::wake(Waiter& w) {
   w.blocked = false; // one wake-up is enough
-  to_wake_.push_back(w.wakeup);
+  to_wake_.push_back(w.wakeup.get());
 }
 
 void Delivery::flush_wakeups() {
   if (to_wake_.empty()) return;
-  // Releasing yields: another actor may flush its own wake-ups meanwhile, into to_wake_.
-  std::vector<simgrid::s4u::SemaphorePtr> now;
-  now.swap(waking_);
+  // Releasing yields: another actor may flush its own wake-ups meanwhile, into to_wake_. The
+  // list being released is set apart, in a vector of the spares (their buffers kept).
+  std::vector<sg::Semaphore*> now;
+  if (!spare_lists_.empty()) {
+    now.swap(spare_lists_.back());
+    spare_lists_.pop_back();
+  }
   now.swap(to_wake_);
-  for (auto& s : now)
+  for (sg::Semaphore* s : now)
     s->release();
   now.clear();
-  if (waking_.capacity() < now.capacity()) waking_.swap(now); // keep the larger buffer
+  spare_lists_.push_back(std::move(now));
 }
 
 void Delivery::arrived(Transit& m) {
-  m.holds.clear();
-  m.holds.shrink_to_fit();
   notify(waiters_[m.dst], m);
   notify(waiters_[m.src], m);
 }
 
 TransitPtr Delivery::post(int src, int dst, int tag, Message msg, Blocks blocks, bool bundle) {
-  auto m = std::make_shared<Transit>();
+  TransitPtr m = TransitPtr::make();
   m->src = src;
   m->dst = dst;
   m->tag = tag;
@@ -85,16 +88,18 @@ TransitPtr Delivery::post(int src, int dst, int tag, Message msg, Blocks blocks,
   const double bytes = double(m->charged);
   if (fidelity_ == Fidelity::Analytic && !events_driven_) {
     double t = m->sent_at;
-    for (const Hold& h : net_.holds(src, dst, bytes))
+    net_.holds(src, dst, bytes, m->holds);
+    for (const Hold& h : m->holds)
       t += h.seconds;
     m->arrival = t;
     inboxes_[dst].push(m);
     notify(waiters_[dst], *m);
   } else if (events_driven_) {
-    m->holds = net_.holds(src, dst, bytes);
+    net_.holds(src, dst, bytes, m->holds);
     inboxes_[dst].push(m);
     advance(m, m->sent_at);
   } else {
+    m->holds.clear();
     inboxes_[dst].push(m);
     sg::Actor::create("msg", hosts_[src], [this, m, bytes] {
       net_.transfer(m->src, m->dst, bytes);
@@ -110,44 +115,46 @@ TransitPtr Delivery::post(int src, int dst, int tag, Message msg, Blocks blocks,
 // A known arrival that nothing can bring forward is waited for by sleeping until it: cheaper than
 // a timed wait on the semaphore, and nobody needs to wake this rank (it is not marked blocked).
 // As with block(), the deadline itself counts as reached.
-double Delivery::sleep_until(double deadline) {
-  const double d = deadline - sg::Engine::get_clock();
-  if (d > 0) sg::this_actor::sleep_for(d);
+double Delivery::sleep_until(double deadline, double& now) {
+  const double d = deadline - now;
+  if (d > 0) {
+    sg::this_actor::sleep_for(d);
+    now = sg::Engine::get_clock();
+  }
   return deadline;
 }
 
-void Delivery::await_arrival(int self, const Transit& m) {
+void Delivery::await_arrival(int self, const Transit& m, double& now) {
   Waiter& w = waiters_[self];
   double reached = kNever;
-  while (!(m.arrival <= std::max(sg::Engine::get_clock(), reached))) {
+  while (!(m.arrival <= std::max(now, reached))) {
     if (m.arrival != kNotYet) { // set once: only contention (circuit, flow) leaves it open
-      reached = sleep_until(m.arrival);
+      reached = sleep_until(m.arrival, now);
       continue;
     }
     w.send = &m;
-    reached = block(w, m.arrival);
+    reached = block(w, m.arrival, now);
     w.send = nullptr;
   }
 }
 
-TransitPtr Delivery::receive(int self, int src, int tag) {
+TransitPtr Delivery::receive(int self, int src, int tag, double& now) {
   Waiter& w = waiters_[self];
   double reached = kNever;
   for (;;) {
     double wake = kNotYet;
-    if (auto m = inboxes_[self].take(src, tag, std::max(sg::Engine::get_clock(), reached), wake))
-      return m;
+    if (auto m = inboxes_[self].take(src, tag, std::max(now, reached), wake)) return m;
     // From one source, the oldest message of its tag is the one to take (nothing sent later
     // overtakes it): once its arrival is known, sleep until it. From any source, another message
     // may still arrive first.
     if (src != kAnySource && wake != kNotYet) {
-      reached = sleep_until(wake);
+      reached = sleep_until(wake, now);
       continue;
     }
     w.receiving = true;
     w.src = src;
     w.tag = tag;
-    reached = block(w, wake);
+    reached = block(w, wake, now);
     w.receiving = false;
   }
 }
@@ -300,15 +307,17 @@ void Delivery::process(const Event& e) {
 
 void Delivery::network_loop() {
   Waiter& self = waiters_.back();
-  double reached = kNever;
+  double reached = kNever, now = sg::Engine::get_clock();
   for (;;) {
-    while (!events_.empty() && events_.top().time <= std::max(sg::Engine::get_clock(), reached)) {
+    // Processing does not yield: the clock stays at `now` until block().
+    while (!events_.empty() && events_.top().time <= std::max(now, reached)) {
       const Event e = events_.top();
       events_.pop();
       process(e);
     }
     flush_wakeups();
-    reached = block(self, events_.empty() ? kNotYet : events_.top().time);
+    now = sg::Engine::get_clock();
+    reached = block(self, events_.empty() ? kNotYet : events_.top().time, now);
   }
 }
 

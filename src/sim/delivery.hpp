@@ -32,10 +32,12 @@ public:
   // charged m.charged bytes, whatever the payload's size. A message of several blocks comes as
   // `blocks` (bundle true), charged m.charged.
   TransitPtr post(int src, int dst, int tag, Message m, Blocks blocks = {}, bool bundle = false);
-  // Blocks rank `self` until message m has arrived (a sender's completion).
-  void await_arrival(int self, const Transit& m);
-  // Blocks rank `self` until a message from src (or kAnySource) with this tag can be taken.
-  TransitPtr receive(int self, int src, int tag);
+  // Blocks rank `self` until message m has arrived (a sender's completion). `now` is the virtual
+  // time on entry, and on return.
+  void await_arrival(int self, const Transit& m, double& now);
+  // Blocks rank `self` until a message from src (or kAnySource) with this tag can be taken. `now`
+  // is the virtual time on entry, and on return.
+  TransitPtr receive(int self, int src, int tag, double& now);
 
 private:
   // One per rank: where its actor blocks, and what it waits for (to notify only when it matters).
@@ -68,8 +70,9 @@ private:
     bool operator>(const Event& o) const { return time != o.time ? time > o.time : seq > o.seq; }
   };
 
-  double block(Waiter& w, double deadline); // returns the deadline if reached, else -inf
-  double sleep_until(double deadline);      // returns the deadline
+  // Both return the deadline if reached (else -inf) and set `now` to the time they return at.
+  double block(Waiter& w, double deadline, double& now);
+  double sleep_until(double deadline, double& now);
   void notify(Waiter& w, const Transit& m);
   void wake(Waiter& w);
   void flush_wakeups();
@@ -97,8 +100,9 @@ private:
   std::vector<Channel> channels_;
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> events_;
   std::uint64_t event_seq_ = 0;
-  std::vector<simgrid::s4u::SemaphorePtr> to_wake_, waking_;
-  std::vector<TransitPtr> woken_; // scratch of process()
+  std::vector<simgrid::s4u::Semaphore*> to_wake_;                  // waiters_ owns them
+  std::vector<std::vector<simgrid::s4u::Semaphore*>> spare_lists_; // flush_wakeups' (capacity kept)
+  std::vector<TransitPtr> woken_;                                  // scratch of process()
   bool events_driven_; // circuit, or any fidelity zcube times on half-duplex-limited links
   DuplexLinks duplex_;
 };

@@ -4,6 +4,28 @@
 
 namespace zc {
 
+void Inbox::Queue::push(TransitPtr m) {
+  if (!first)
+    first = std::move(m);
+  else
+    rest.push_back(std::move(m));
+}
+
+TransitPtr Inbox::Queue::remove(std::size_t i) {
+  TransitPtr m;
+  if (i == 0) {
+    m = std::move(first);
+    if (!rest.empty()) {
+      first = std::move(rest.front());
+      rest.erase(rest.begin());
+    }
+  } else {
+    m = std::move(rest[i - 1]);
+    rest.erase(rest.begin() + std::ptrdiff_t(i - 1));
+  }
+  return m;
+}
+
 void Inbox::push(TransitPtr m) {
   const int s = m->src;
   if (s < 0 || std::size_t(s) >= by_source_.size())
@@ -13,7 +35,7 @@ void Inbox::push(TransitPtr m) {
     slot_[std::size_t(s)] = int(pending_sources_.size());
     pending_sources_.push_back(s);
   }
-  q.push_back(std::move(m));
+  q.push(std::move(m));
 }
 
 int Inbox::oldest(int src, int tag) const {
@@ -25,8 +47,7 @@ int Inbox::oldest(int src, int tag) const {
 
 TransitPtr Inbox::remove(int src, int index) {
   auto& q = by_source_[std::size_t(src)];
-  TransitPtr m = std::move(q[std::size_t(index)]);
-  q.erase(q.begin() + index);
+  TransitPtr m = q.remove(std::size_t(index));
   if (q.empty()) { // swap-remove the source from the pending list
     const int at = slot_[std::size_t(src)];
     const int last = pending_sources_.back();

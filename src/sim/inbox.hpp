@@ -6,8 +6,9 @@
 // which a real node's buffer would have filled.
 //
 // Kept per source, in send order: a node rarely has more than a few messages of one source
-// pending, so a short scan beats any index (no allocation per message once a source's list has
-// grown). Any-source receives scan only the sources with something pending.
+// pending, so a short scan beats any index. A source's oldest message has a place of its own, so
+// that hearing from many sources one message at a time (an all-to-all) allocates nothing.
+// Any-source receives scan only the sources with something pending.
 #include <cstdint>
 #include <vector>
 
@@ -26,13 +27,23 @@ public:
   TransitPtr take(int src, int tag, double now, double& wake);
 
 private:
+  // One source's pending messages in send order: the oldest, then the others.
+  struct Queue {
+    TransitPtr first;
+    std::vector<TransitPtr> rest;
+    bool empty() const { return !first; }
+    std::size_t size() const { return first ? 1 + rest.size() : 0; }
+    const TransitPtr& operator[](std::size_t i) const { return i == 0 ? first : rest[i - 1]; }
+    void push(TransitPtr m);
+    TransitPtr remove(std::size_t i);
+  };
   // The oldest pending message of (src, tag), or -1.
   int oldest(int src, int tag) const;
   TransitPtr remove(int src, int index);
 
-  std::vector<std::vector<TransitPtr>> by_source_; // source -> pending, in send order
-  std::vector<int> pending_sources_;               // sources whose list is not empty
-  std::vector<int> slot_;                          // source -> its index in pending_sources_, or -1
+  std::vector<Queue> by_source_;     // source -> pending, in send order
+  std::vector<int> pending_sources_; // sources whose list is not empty
+  std::vector<int> slot_;            // source -> its index in pending_sources_, or -1
 };
 
 } // namespace zc

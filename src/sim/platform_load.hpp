@@ -1,9 +1,10 @@
 #pragma once
 // Loads a platform file into the SimGrid engine and reads the machine model back from what
 // SimGrid loaded (platforms/README.md): channel bandwidth and latency from the links, start-up from
-// SMPI's receive overhead (the nodes' smpi/or property), CPU speed from the hosts, switching, memory and cycles from
-// the machine zone's zcube.* properties. Every figure is checked (finite, in range) and a bad one
-// is an InputError naming the file and the attribute, before any simulation starts.
+// SMPI's receive overhead (the nodes' smpi/or property), CPU speed from the hosts, switching,
+// memory and cycles from the machine zone's zcube.* properties. Every figure is checked (finite, in
+// range) and a bad one is an InputError naming the file and the attribute, before any simulation
+// starts.
 #include <string>
 #include <vector>
 

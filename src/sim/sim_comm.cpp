@@ -14,23 +14,53 @@ public:
   void wait() override {
     if (!msg_) return;
     const double t0 = sg::Engine::get_clock();
-    delivery_.await_arrival(self_, *msg_);
+    double t1 = t0;
+    delivery_.await_arrival(self_, *msg_, t1);
     msg_ = nullptr;
-    const double t1 = sg::Engine::get_clock();
     stats_.comm_s += t1 - t0;
     if (stats_.log) stats_.log->activity(Activity::Send, t0, t1);
   }
   ~SimSendRequest() override {
-    if (msg_)
-      delivery_.await_arrival(self_, *msg_); // an unwaited send completes before its handle dies
+    if (!msg_) return;
+    double now = sg::Engine::get_clock();
+    delivery_.await_arrival(self_, *msg_, now); // an unwaited send completes before its handle dies
+  }
+
+  // A handle is made and dropped for every send: recycled through a free list of this thread
+  // instead of the heap.
+  static void* operator new(std::size_t n) {
+    auto& list = free_handles.list;
+    if (n != sizeof(SimSendRequest) || list.empty()) return ::operator new(n);
+    void* p = list.back();
+    list.pop_back();
+    return p;
+  }
+  static void operator delete(void* p, std::size_t n) {
+    if (n == sizeof(SimSendRequest))
+      free_handles.list.push_back(p);
+    else
+      ::operator delete(p);
   }
 
 private:
+  struct FreeHandles {
+    std::vector<void*> list;
+    FreeHandles() = default;
+    FreeHandles(const FreeHandles&) = delete;
+    FreeHandles& operator=(const FreeHandles&) = delete;
+    ~FreeHandles() {
+      for (void* p : list)
+        ::operator delete(p);
+    }
+  };
+  static thread_local FreeHandles free_handles;
+
   Delivery& delivery_;
   int self_;
   TransitPtr msg_;
   NodeStats& stats_;
 };
+thread_local SimSendRequest::FreeHandles SimSendRequest::free_handles;
 } // namespace
 
 void SimComm::check_rank(int r, const char* what) const {
@@ -42,7 +72,15 @@ void SimComm::check_rank(int r, const char* what) const {
 SendHandle SimComm::post(int dst, int tag, Message msg, std::size_t payload_bytes, Blocks blocks,
                          bool bundle) {
   check_rank(dst, "send");
-  stats_.count_send(payload_bytes, msg.charged);
+  // NodeStats::count_send, with the current phase's entry remembered between sends.
+  if (!phase_traffic_ || traffic_phase_ != stats_.phase) {
+    phase_traffic_ = &stats_.phase_traffic[stats_.phase];
+    traffic_phase_ = stats_.phase;
+  }
+  stats_.bytes_sent += msg.charged;
+  stats_.payload_bytes_sent += payload_bytes;
+  ++stats_.messages;
+  *phase_traffic_ += Traffic{msg.charged, payload_bytes, 1};
   if (stats_.log)
     stats_.log->sends.push_back(
         {dst, tag, msg.charged, message_hops(topology_, nodes_, rank_, dst), now()});
@@ -66,9 +104,9 @@ SendHandle SimComm::isend_blocks(int dst, int tag, Blocks blocks) {
 TransitPtr SimComm::take(int src, int tag, int* from) {
   if (src != kAnySource) check_rank(src, "recv");
   const double t0 = sg::Engine::get_clock();
-  TransitPtr m = delivery_.receive(rank_, src, tag);
+  double t1 = t0;
+  TransitPtr m = delivery_.receive(rank_, src, tag, t1);
   if (from) *from = m->src;
-  const double t1 = sg::Engine::get_clock();
   stats_.comm_s += t1 - t0;
   if (stats_.log) {
     stats_.log->activity(Activity::Wait, t0, t1);

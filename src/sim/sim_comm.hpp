@@ -40,6 +40,8 @@ private:
   Topology topology_;
   Delivery& delivery_;
   NodeStats& stats_;
+  Traffic* phase_traffic_ = nullptr; // stats_.phase_traffic[traffic_phase_], while it runs
+  std::string traffic_phase_;
 };
 
 } // namespace zc

@@ -86,16 +86,29 @@ void SimNetwork::transfer(int src, int dst, double m) {
   node_transfer(src, dst, m);
 }
 
-// A hold of `fixed` seconds then `bytes` over the node links `chans` (or over the host link).
-void SimNetwork::add_hold(std::vector<Hold>& out, std::vector<std::pair<int, int>> chans,
-                          double fixed, double bytes, bool node_links) const {
-  Hold h;
+namespace {
+// Hold n of `out`, made when out has none there yet.
+Hold& slot(std::vector<Hold>& out, std::size_t n) {
+  if (n == out.size()) out.emplace_back();
+  return out[n];
+}
+} // namespace
+
+// Hold out[n], whose channels are set (node links, or the host link): `fixed` seconds then `bytes`
+// over them. Kept (++n) unless it has nothing to wait for and nothing to acquire.
+void SimNetwork::finish_hold(std::vector<Hold>& out, std::size_t& n, double fixed, double bytes,
+                             bool node_links) const {
+  Hold& h = out[n];
   h.seconds = std::max(fixed + bytes * (node_links ? p_.per_byte_s : p_.host_per_byte_s), 0.0);
+  h.links.clear();
+  h.fixed_s = 0;
+  h.bytes = 0;
   if (node_links && bytes > 0 && p_.half_duplex_limited()) {
-    h.links = chans;
+    h.links.assign(h.channels.begin(), h.channels.end());
     h.fixed_s = std::max(fixed, 0.0);
     h.bytes = bytes;
   }
+  auto& chans = h.channels;
   if (fid_ != Fidelity::Circuit) chans.clear();
   if (chans.empty() && h.seconds <= 0) return; // nothing to wait for, nothing to acquire
   // The global order of acquisition (dimension order on the cube: the e-cube path order), which
@@ -111,35 +124,38 @@ void SimNetwork::add_hold(std::vector<Hold>& out, std::vector<std::pair<int, int
   } else if (!std::is_sorted(chans.begin(), chans.end())) {
     std::sort(chans.begin(), chans.end());
   }
-  h.channels = std::move(chans);
-  out.push_back(std::move(h));
+  ++n;
 }
 
 // The same stretches and seconds as node_transfer under the analytic and circuit fidelities.
-void SimNetwork::node_holds(int src, int dst, double m, std::vector<Hold>& out) const {
+void SimNetwork::node_holds(int src, int dst, double m, std::vector<Hold>& out,
+                            std::size_t& n) const {
   if (src == dst) return;
-  auto path = route(topo_, nodes_, src, dst);
   if (p_.switching == Switching::StoreAndForward) {
-    for (auto c : path)
-      add_hold(out, {c}, p_.startup(m), m, true);
+    for (auto c : route(topo_, nodes_, src, dst)) {
+      slot(out, n).channels.assign(1, c);
+      finish_hold(out, n, p_.startup(m), m, true);
+    }
     return;
   }
+  auto& path = slot(out, n).channels;
+  path = route(topo_, nodes_, src, dst);
   const double fixed = p_.startup(m) + (int(path.size()) - 1) * p_.per_hop_s;
-  add_hold(out, std::move(path), fixed, m, true);
+  finish_hold(out, n, fixed, m, true);
 }
 
-std::vector<Hold> SimNetwork::holds(int src, int dst, double m) const {
-  std::vector<Hold> out;
+void SimNetwork::holds(int src, int dst, double m, std::vector<Hold>& out) const {
+  std::size_t n = 0;
   const int host = nodes_;
   if (src != host && dst != host) {
-    node_holds(src, dst, m, out);
-    return out;
+    node_holds(src, dst, m, out, n);
+  } else {
+    if (dst == host) node_holds(src, 0, m, out, n);
+    slot(out, n).channels.assign(1, src == host ? std::pair{host, 0} : std::pair{0, host});
+    finish_hold(out, n, p_.host_startup_s, m, false);
+    if (src == host) node_holds(0, dst, m, out, n);
   }
-  if (dst == host) node_holds(src, 0, m, out);
-  const std::pair<int, int> link = src == host ? std::pair{host, 0} : std::pair{0, host};
-  add_hold(out, {link}, p_.host_startup_s, m, false);
-  if (src == host) node_holds(0, dst, m, out);
-  return out;
+  out.resize(n);
 }
 
 } // namespace zc

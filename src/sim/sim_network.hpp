@@ -35,8 +35,9 @@ public:
   // the links' bandwidth).
   void transfer(int src, int dst, double bytes);
   // The holds of a message under the analytic and circuit fidelities, whose times zcube computes
-  // itself; channels are listed under circuit only.
-  std::vector<Hold> holds(int src, int dst, double bytes) const;
+  // itself; channels are listed under circuit only. Written over `out`, whose holds keep their
+  // vectors' capacity (Delivery reuses a message's for the next one).
+  void holds(int src, int dst, double bytes, std::vector<Hold>& out) const;
 
   const NetworkParams& params() const { return p_; }
   Topology topology() const { return topo_; }
@@ -44,9 +45,10 @@ public:
 
 private:
   void node_transfer(int src, int dst, double bytes);
-  void node_holds(int src, int dst, double bytes, std::vector<Hold>& out) const;
-  void add_hold(std::vector<Hold>& out, std::vector<std::pair<int, int>> chans, double fixed,
-                double bytes, bool node_links) const;
+  // Holds are written at out[n], n counting those kept.
+  void node_holds(int src, int dst, double bytes, std::vector<Hold>& out, std::size_t& n) const;
+  void finish_hold(std::vector<Hold>& out, std::size_t& n, double fixed, double bytes,
+                   bool node_links) const;
   void hold(const std::vector<std::pair<int, int>>& channels, double seconds, double flow_bytes,
             int flow_src, int flow_dst);
   simgrid::s4u::MutexPtr channel(int a, int b);
