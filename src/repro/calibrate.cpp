@@ -10,6 +10,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <tuple>
 
 #include "machine/calibrated_costs.hpp"
@@ -79,36 +80,50 @@ double median_abs(std::vector<double> e) {
 
 const char* const kSchemes[] = {"pair-rs", "zbuf-exc"};
 
-// The 16-node runs of the given scenes (pair-rs and zbuf-exc of each, in that order).
-std::vector<nlohmann::json> kurc_reports(const CostTable& cost,
-                                         const std::vector<std::string>& scenes,
-                                         const CalibrationOptions& o) {
-  // The runs already made with the same platform text (the same cost table) are not made again:
-  // every fold's first step runs the prior table on scenes the whole fit ran it on.
+// The 16-node runs of the given scenes (pair-rs and zbuf-exc of each, in that order) on one cost
+// table: a request of kurc_reports.
+struct KurcRequest {
+  CostTable cost;
+  std::vector<std::string> scenes;
+};
+
+// Every request's runs, made in one batch (each distinct run once). The runs already made with
+// the same platform text (the same cost table) are not made again: every fold's first step runs
+// the prior table on scenes the whole fit ran it on.
+std::vector<std::vector<nlohmann::json>> kurc_reports(const std::vector<KurcRequest>& requests,
+                                                      const CalibrationOptions& o) {
   static std::map<std::string, nlohmann::json> made;
-  TempPlatform plat("ipsc2", cost, kKurcTableNodes);
+  std::vector<std::unique_ptr<TempPlatform>> plats;
   std::vector<SimConfig> cfgs;
-  std::vector<std::string> keys, todo;
-  for (const auto& s : scenes)
-    for (const char* sch : kSchemes) {
-      keys.push_back(plat.text() + '\n' + s + '\n' + sch);
-      if (made.contains(keys.back())) continue;
-      todo.push_back(keys.back());
-      SimConfig c;
-      c.machine = plat.path();
-      c.nodes = kKurcTableNodes;
-      c.algorithm = sch;
-      c.scene_path = o.root + "/scenes/kurc/" + s + ".json";
-      c.width = c.height = kKurcTableSize;
-      c.compare_with_sequential = false; // the images are tested elsewhere; this is a fit
-      cfgs.push_back(c);
-    }
+  std::vector<std::vector<std::string>> keys(requests.size());
+  std::vector<std::string> todo;
+  for (std::size_t r = 0; r < requests.size(); ++r) {
+    plats.push_back(std::make_unique<TempPlatform>("ipsc2", requests[r].cost, kKurcTableNodes));
+    const TempPlatform& plat = *plats.back();
+    for (const auto& s : requests[r].scenes)
+      for (const char* sch : kSchemes) {
+        keys[r].push_back(plat.text() + '\n' + s + '\n' + sch);
+        if (made.contains(keys[r].back()) ||
+            std::find(todo.begin(), todo.end(), keys[r].back()) != todo.end())
+          continue;
+        todo.push_back(keys[r].back());
+        SimConfig c;
+        c.machine = plat.path();
+        c.nodes = kKurcTableNodes;
+        c.algorithm = sch;
+        c.scene_path = o.root + "/scenes/kurc/" + s + ".json";
+        c.width = c.height = kKurcTableSize;
+        c.compare_with_sequential = false; // the images are tested elsewhere; this is a fit
+        cfgs.push_back(c);
+      }
+  }
   auto reps = run_all(cfgs, o);
   for (std::size_t i = 0; i < todo.size(); ++i)
     made[todo[i]] = std::move(reps[i]);
-  std::vector<nlohmann::json> out;
-  for (const auto& k : keys)
-    out.push_back(made.at(k));
+  std::vector<std::vector<nlohmann::json>> out(requests.size());
+  for (std::size_t r = 0; r < requests.size(); ++r)
+    for (const auto& k : keys[r])
+      out[r].push_back(made.at(k));
   return out;
 }
 
@@ -213,47 +228,98 @@ std::vector<double> rel_errors(const std::vector<PhaseRow>& rows) {
   return e;
 }
 
-// The fixed-point iteration of the linearised bounded fit on the given scenes.
-KurcFit fit_kurc(const std::vector<std::string>& scenes, const CalibrationOptions& o,
-                 const std::string& label) {
-  const CostTable physical = prior_i386_costs();
+// One fit of kurc_fits: its scenes, its name in the log, and where its iteration stands.
+struct KurcFitState {
+  std::vector<std::string> scenes;
+  std::string label;
   KurcFit f;
-  f.k.assign(cost_groups().size(), 1.0);
-  for (int it = 0;; ++it) {
-    f.last = kurc_rows(kurc_reports(scale_groups(physical, f.k), scenes, o), scenes, physical, f.k);
-    if (it == 0) f.first = f.last;
-    const double e = rms(rel_errors(f.last));
-    f.iterations.push_back({{"step", it}, {"scale", f.k}, {"rms_rel_error", e}});
-    if (o.verbose) std::cerr << "calibrate: " << label << " step " << it << ": rms " << e << "\n";
-    if (it >= o.max_iterations) break;
-    const std::vector<double> kn = fit_step(f.last, f.k, o);
-    double change = 0;
-    for (std::size_t g = 0; g < kn.size(); ++g)
-      change = std::max(change, std::fabs(kn[g] - f.k[g]) / std::max(f.k[g], 1e-9));
-    f.k = kn;
-    if (change < 1e-4) {
+  int it = 0;
+  bool settled = false; // one more run at the settled multipliers, then done
+  bool done = false;
+};
+
+// The fixed-point iteration of the linearised bounded fit, for several sets of scenes at once (the
+// whole fit and the leave-one-scene-out folds): each step's runs of every fit still iterating go
+// in one batch, so the folds run side by side instead of one after another. Each fit's steps are
+// those it would take alone.
+std::vector<KurcFit>
+kurc_fits(const std::vector<std::pair<std::vector<std::string>, std::string>>& fits,
+          const CalibrationOptions& o) {
+  const CostTable physical = prior_i386_costs();
+  std::vector<KurcFitState> st;
+  for (const auto& [scenes, label] : fits) {
+    st.push_back({scenes, label, {}, 0, false, false});
+    st.back().f.k.assign(cost_groups().size(), 1.0);
+  }
+  while (true) {
+    std::vector<std::size_t> active;
+    std::vector<KurcRequest> requests;
+    for (std::size_t i = 0; i < st.size(); ++i)
+      if (!st[i].done) {
+        active.push_back(i);
+        requests.push_back({scale_groups(physical, st[i].f.k), st[i].scenes});
+      }
+    if (active.empty()) break;
+    const auto reps = kurc_reports(requests, o);
+    for (std::size_t a = 0; a < active.size(); ++a) {
+      KurcFitState& s = st[active[a]];
+      KurcFit& f = s.f;
+      f.last = kurc_rows(reps[a], s.scenes, physical, f.k);
+      if (s.settled) { // the residuals of the final table
+        s.done = true;
+        continue;
+      }
+      if (s.it == 0) f.first = f.last;
+      const double e = rms(rel_errors(f.last));
+      f.iterations.push_back({{"step", s.it}, {"scale", f.k}, {"rms_rel_error", e}});
+      if (o.verbose)
+        std::cerr << "calibrate: " << s.label << " step " << s.it << ": rms " << e << "\n";
+      if (s.it >= o.max_iterations) {
+        s.done = true;
+        continue;
+      }
+      const std::vector<double> kn = fit_step(f.last, f.k, o);
+      double change = 0;
+      for (std::size_t g = 0; g < kn.size(); ++g)
+        change = std::max(change, std::fabs(kn[g] - f.k[g]) / std::max(f.k[g], 1e-9));
+      f.k = kn;
+      ++s.it;
       // One more run at the settled multipliers, so the residuals are of the final table.
-      f.last =
-          kurc_rows(kurc_reports(scale_groups(physical, f.k), scenes, o), scenes, physical, f.k);
-      break;
+      s.settled = change < 1e-4;
     }
   }
-  return f;
+  std::vector<KurcFit> out;
+  for (auto& s : st)
+    out.push_back(std::move(s.f));
+  return out;
 }
 
-// Leave one scene out: fit the other five, predict the sixth's six figures by simulating it.
-nlohmann::json cross_validate(const CalibrationOptions& o) {
-  nlohmann::json folds = nlohmann::json::array();
-  std::vector<double> errs;
-  const CostTable physical = prior_i386_costs();
+// The training scenes of each leave-one-scene-out fold (every scene but the held one).
+std::vector<std::pair<std::vector<std::string>, std::string>> folds() {
+  std::vector<std::pair<std::vector<std::string>, std::string>> out;
   for (const auto& held : kurc_scenes()) {
     std::vector<std::string> train;
     for (const auto& s : kurc_scenes())
       if (s != held) train.push_back(s);
-    const KurcFit f = fit_kurc(train, o, "fold " + held);
-    const std::vector<std::string> test = {held};
-    const auto rows =
-        kurc_rows(kurc_reports(scale_groups(physical, f.k), test, o), test, physical, f.k);
+    out.push_back({train, "fold " + held});
+  }
+  return out;
+}
+
+// Leave one scene out: fit the other five (fold_fits, in kurc_scenes' order), predict the sixth's
+// six figures by simulating it (the six predictions in one batch).
+nlohmann::json cross_validate(const std::vector<KurcFit>& fold_fits, const CalibrationOptions& o) {
+  nlohmann::json folds = nlohmann::json::array();
+  std::vector<double> errs;
+  const CostTable physical = prior_i386_costs();
+  std::vector<KurcRequest> requests;
+  for (std::size_t i = 0; i < kurc_scenes().size(); ++i)
+    requests.push_back({scale_groups(physical, fold_fits[i].k), {kurc_scenes()[i]}});
+  const auto reps = kurc_reports(requests, o);
+  for (std::size_t i = 0; i < kurc_scenes().size(); ++i) {
+    const auto& held = kurc_scenes()[i];
+    const KurcFit& f = fold_fits[i];
+    const auto rows = kurc_rows(reps[i], requests[i].scenes, physical, f.k);
     nlohmann::json targets = nlohmann::json::array();
     for (const auto& r : rows) {
       const double e = (r.time - r.paper) / r.paper;
@@ -272,6 +338,10 @@ nlohmann::json cross_validate(const CalibrationOptions& o) {
           {"median_abs_rel_error", median_abs(errs)},
           {"worst_abs_rel_error", worst},
           {"rms_rel_error", rms(errs)}};
+}
+
+nlohmann::json cross_validate(const CalibrationOptions& o) {
+  return cross_validate(kurc_fits(folds(), o), o);
 }
 
 // ---- Charles et al. §6 on the iPSC/860: predicted, not fitted ---------------------------------
@@ -432,7 +502,13 @@ nlohmann::json calibrate(const CalibrationOptions& opt) {
   CalibrationOptions o = opt;
   nlohmann::json selection;
   if (o.select) std::tie(selection, o.fixed_groups) = select_model(o);
-  const KurcFit f = fit_kurc(kurc_scenes(), o, "iPSC/2 fit");
+  // The whole fit and, to validate it, the folds, side by side.
+  auto fits = folds();
+  if (!o.cross_validate) fits.clear();
+  fits.insert(fits.begin(), {kurc_scenes(), "iPSC/2 fit"});
+  std::vector<KurcFit> fitted = kurc_fits(fits, o);
+  const KurcFit f = fitted.front();
+  fitted.erase(fitted.begin());
   nlohmann::json fit;
   nlohmann::json groups = nlohmann::json::array(), free = nlohmann::json::array(),
                  at_bound = nlohmann::json::array();
@@ -458,7 +534,7 @@ nlohmann::json calibrate(const CalibrationOptions& opt) {
   fit["rms_rel_error"] = {{"kurc_prior", rms(e_prior)}, {"kurc_fitted", rms(e_fit)}};
   fit["charles"] = charles_prediction(f.k, o);
   fit["plausibility"] = plausibility(f.k);
-  if (o.cross_validate) fit["crossval"] = cross_validate(o);
+  if (o.cross_validate) fit["crossval"] = cross_validate(fitted, o);
   if (o.select) fit["selection"] = selection;
   fit["settings"] = {{"ridge", o.ridge},
                      {"fixed_groups", o.fixed_groups},
