@@ -17,8 +17,8 @@ case "${1:-}" in
 esac
 # The zcube command: compiler, build tools, the libraries it links, matplotlib for its plots, MPI
 # for --backend mpi.
-PKGS=(build-essential cmake ccache pkg-config libsimgrid-dev libglm-dev libopenimageio-dev
-      nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libssl-dev libeigen3-dev
+PKGS=(build-essential cmake ninja-build ccache pkg-config libsimgrid-dev libglm-dev
+      libopenimageio-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libssl-dev libeigen3-dev
       python3-matplotlib
       libopenmpi-dev openmpi-bin)
 # The tests: GoogleTest, pajeng (Paje trace checks), clang and its libFuzzer runtime, Mesa's
@@ -38,7 +38,12 @@ if [ ${#missing[@]} -gt 0 ]; then
   apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 BUILD_TYPE=${ZCUBE_BUILD_TYPE:-Release}
-cmake -S . -B build -DCMAKE_BUILD_TYPE="$BUILD_TYPE" >/dev/null
+# A new build directory uses Ninja (it overlaps the compilation of a library's dependants with its
+# own, where make waits for each library); an existing one keeps the generator it was made with.
+generator=()
+[ -f build/CMakeCache.txt ] || generator=(-G Ninja)
+# ZCUBE_UNITY: each compiler run takes a batch of source files (CMakeLists.txt).
+cmake "${generator[@]}" -S . -B build -DCMAKE_BUILD_TYPE="$BUILD_TYPE" -DZCUBE_UNITY=ON >/dev/null
 if [ $tests = 1 ]; then
   cmake --build build -j"$(nproc)"
 else

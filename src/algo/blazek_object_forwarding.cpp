@@ -3,6 +3,8 @@
 // its strip and forwards to the owners of the other strips what falls there: the description to
 // be re-tessellated (--forward object) or the tessellated polygons (--forward polygons). Strips
 // are pasted, not merged.
+#include <nlohmann/json.hpp>
+
 #include "algo/blazek_common.hpp"
 #include "algo/blazek_culling.hpp"
 #include "algo/blazek_host_messages.hpp"

@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "comm/collectives.hpp"
 #include "comm/wire.hpp"
 

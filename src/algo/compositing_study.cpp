@@ -6,6 +6,8 @@
 
 #include <bit>
 
+#include <nlohmann/json.hpp>
+
 #include "algo/composite.hpp"
 #include "algo/kurc_merge_scheme.hpp"
 #include "algo/kurc_partition.hpp"

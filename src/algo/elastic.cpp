@@ -14,6 +14,8 @@
 // is a report phase.
 #include "algo/elastic.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "algo/elastic_steps.hpp"
 #include "algo/elastic_vertices.hpp"
 #include "algo/elastic_wire.hpp"

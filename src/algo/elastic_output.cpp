@@ -2,6 +2,8 @@
 // workload and rows) of the last picture.
 #include <algorithm>
 
+#include <nlohmann/json.hpp>
+
 #include "algo/elastic_steps.hpp"
 #include "comm/collectives.hpp"
 #include "comm/wire.hpp"

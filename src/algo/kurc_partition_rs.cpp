@@ -34,7 +34,7 @@ void split(const std::vector<std::uint64_t>& w, int a, int b, int bit, int dims,
   split(w, c, b, bit + 1, dims, prefix | (1 << bit), owner);
 }
 
-int log2_exact(int p) {
+int ceil_log2(int p) {
   int d = 0;
   while ((1 << d) < p)
     ++d;
@@ -45,7 +45,7 @@ int log2_exact(int p) {
 
 std::vector<int> recursive_subdivision(const std::vector<std::uint64_t>& row_pixels, int nodes) {
   std::vector<int> owner(row_pixels.size(), 0);
-  split(row_pixels, 0, int(row_pixels.size()), 0, log2_exact(nodes), 0, owner);
+  split(row_pixels, 0, int(row_pixels.size()), 0, ceil_log2(nodes), 0, owner);
   return owner;
 }
 

@@ -8,6 +8,8 @@
 //   output              the picture gathered to node 0, and the paper's measures
 #include "algo/kurc_pixel_merging.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include "algo/composite.hpp"
 #include "algo/kurc_merge_scheme.hpp"
 #include "comm/collectives.hpp"

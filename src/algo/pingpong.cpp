@@ -2,6 +2,8 @@
 
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "machine/topology.hpp"
 #include "machine/units.hpp"
 #include "util/error.hpp"

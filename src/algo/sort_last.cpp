@@ -4,6 +4,8 @@
 
 #include <algorithm>
 
+#include <nlohmann/json.hpp>
+
 #include "algo/composite.hpp"
 #include "algo/kurc_merge_scheme.hpp"
 #include "algo/kurc_partition.hpp"

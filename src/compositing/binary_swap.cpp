@@ -12,7 +12,7 @@ namespace zc::compositing {
 
 namespace {
 
-Measures composite(Node& n, Picture& p, const std::vector<int>& owner) {
+Measures binary_swap_composite(Node& n, Picture& p, const std::vector<int>& owner) {
   Comm& c = n.comm;
   const int r = c.rank();
   Measures m;
@@ -48,7 +48,7 @@ Strategy binary_swap() {
                : "binary swap needs a power of two nodes (folding does not)";
   };
   s.owners = [](int nodes) { return nodes; };
-  s.composite = composite;
+  s.composite = binary_swap_composite;
   return s;
 }
 

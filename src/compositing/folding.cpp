@@ -16,7 +16,7 @@ int power_below(int nodes) {
   return p;
 }
 
-Measures composite(Node& n, Picture& p, const std::vector<int>& owner) {
+Measures folding_composite(Node& n, Picture& p, const std::vector<int>& owner) {
   Comm& c = n.comm;
   const int r = c.rank(), P = c.size(), low = power_below(P);
   Measures m;
@@ -55,7 +55,7 @@ Strategy folding() {
   s.summary = "binary swap after folding the nodes above a power of two onto those below";
   s.refuses = [](int) { return std::string(); };
   s.owners = power_below;
-  s.composite = composite;
+  s.composite = folding_composite;
   return s;
 }
 

@@ -27,8 +27,8 @@ std::vector<int> radix_rounds(int nodes, const std::vector<int>& radix) {
 
 namespace {
 
-Measures composite(Node& n, Picture& p, const std::vector<int>& owner,
-                   const std::vector<int>& radix) {
+Measures radix_k_composite(Node& n, Picture& p, const std::vector<int>& owner,
+                           const std::vector<int>& radix) {
   const std::vector<int> rounds = radix_rounds(n.comm.size(), radix);
   Measures m;
   std::vector<int> dest(owner.size());
@@ -59,7 +59,7 @@ Strategy radix_k(std::vector<int> radix) {
   };
   s.owners = [](int nodes) { return nodes; };
   s.composite = [radix](Node& n, Picture& p, const std::vector<int>& owner) {
-    return composite(n, p, owner, radix);
+    return radix_k_composite(n, p, owner, radix);
   };
   return s;
 }

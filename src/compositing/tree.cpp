@@ -8,7 +8,7 @@ namespace zc::compositing {
 
 namespace {
 
-Measures composite(Node& n, Picture& p, const std::vector<int>& owner) {
+Measures tree_composite(Node& n, Picture& p, const std::vector<int>& owner) {
   Comm& c = n.comm;
   const int r = c.rank(), P = c.size();
   Measures m;
@@ -40,7 +40,7 @@ Strategy tree() {
   s.summary = "pairwise merges of whole pictures up a binary tree to node 0 (Blazek)";
   s.refuses = [](int) { return std::string(); };
   s.owners = [](int) { return 1; };
-  s.composite = composite;
+  s.composite = tree_composite;
   return s;
 }
 

@@ -25,7 +25,7 @@ const std::vector<Method> kMethods = {{"host-initiated", "packet", "100"},
 // host initiated worst.
 const std::vector<std::string> kThesisOrder = {"node-initiated", "host-broadcast",
                                                "object-forwarding", "host-initiated"};
-const std::vector<int> kNodes = {1, 2, 4, 8, 16, 32};
+const std::vector<int> kBlazekNodes = {1, 2, 4, 8, 16, 32};
 
 std::vector<int> sphere_counts(bool full) {
   if (full) return {1, 4, 16, 64, 256, 1024, 2048};
@@ -61,7 +61,7 @@ std::string write_blazek(const std::vector<int>& spheres, const Reports& reps,
     for (int s : spheres) {
       const double seq = virtual_s(reps.at(seq_key(s)));
       std::vector<std::string> row = {std::to_string(s)};
-      for (int n : kNodes) {
+      for (int n : kBlazekNodes) {
         const auto& r = reps.at(key(m.name, s, n));
         host.add({m.name, std::to_string(s), std::to_string(n),
                   num(r["scene"].value("triangles", 0.0)),
@@ -170,7 +170,7 @@ PaperPlan blazek_plan(const ReproduceOptions& o) {
     const std::string path =
         o.root + "/scenes/blazek/thesis_spheres_" + std::to_string(s) + ".json";
     for (const auto& m : kMethods)
-      for (int n : kNodes) {
+      for (int n : kBlazekNodes) {
         SimConfig c = repro_config("ipsc2", n, m.name, path, 512);
         c.overrides.memory_bytes = 16.0 * 1048576;
         if (!m.option_key.empty()) c.options.values[m.option_key] = m.option_value;

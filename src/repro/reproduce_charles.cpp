@@ -20,7 +20,7 @@ const std::vector<Case> kCases = {
     {"teapot", kCharlesTeapotScene, 512},
     {"bone", "scenes/bone.json", 512},
 };
-const std::vector<int> kNodes = {1, 2, 4, 8, 16};
+const std::vector<int> kCharlesNodes = {1, 2, 4, 8, 16};
 
 std::string seq_key(const Case& c) {
   return "seq/" + c.scene + "/" + std::to_string(c.size);
@@ -54,7 +54,7 @@ std::string write_charles(const Reports& reps, const std::string& dir) {
     const double seq = virtual_s(seq_r);
     for (const char* topo : {"cube", "ring"}) {
       std::vector<std::string> mdrow = {c.scene, std::to_string(c.size), topo};
-      for (int n : kNodes) {
+      for (int n : kCharlesNodes) {
         // One node has no topology: the ring's P = 1 point is the cube's.
         const auto& r = reps.at(el_key(c, n == 1 ? "cube" : topo, n));
         if (!ok(r) ||
@@ -156,7 +156,7 @@ PaperPlan charles_plan(const ReproduceOptions& o) {
     const std::string path = o.root + "/" + c.file;
     p.points.push_back({seq_key(c), repro_config("ipsc860", 1, "sequential", path, c.size)});
     for (const char* topo : {"cube", "ring"})
-      for (int n : kNodes) {
+      for (int n : kCharlesNodes) {
         if (n == 1 && std::string(topo) == "ring") continue;
         SimConfig cfg = repro_config("ipsc860", n, "elastic", path, c.size);
         cfg.topology = parse_topology(topo);

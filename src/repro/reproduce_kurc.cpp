@@ -10,9 +10,9 @@ namespace zc {
 
 namespace {
 
-const std::vector<std::string> kSchemes = {"zbuf-exc", "pair-rs", "pair-hbp", "aapc-rs",
-                                           "aapc-hbp"};
-const std::vector<int> kNodes = {1, 2, 4, 8, 16};
+const std::vector<std::string> kKurcSchemes = {"zbuf-exc", "pair-rs", "pair-hbp", "aapc-rs",
+                                               "aapc-hbp"};
+const std::vector<int> kKurcNodes = {1, 2, 4, 8, 16};
 const std::vector<int> kSizes = {400, 640};
 const std::vector<std::string> kSpeedupScenes = {"1pot", "2pot"};
 
@@ -96,12 +96,12 @@ std::string write_kurc(const Reports& reps, const std::string& dir) {
             "tpf"},
            {}};
   Table su_md{{"scene", "size", "scheme", "P=2", "P=4", "P=8", "P=16"}, {}};
-  for (const auto& sch : kSchemes)
+  for (const auto& sch : kKurcSchemes)
     for (const auto& s : kSpeedupScenes)
       for (int size : kSizes) {
         const auto& base = reps.at(seq_key(s, size));
         std::vector<std::string> mdrow = {s, std::to_string(size), sch};
-        for (int n : kNodes) {
+        for (int n : kKurcNodes) {
           const auto& r = reps.at(su_key(sch, s, size, n));
           if (!ok(r) || !ok(base)) {
             su.add({sch, s, std::to_string(size), std::to_string(n), "oom", "oom"});
@@ -176,10 +176,10 @@ PaperPlan kurc_plan(const ReproduceOptions& o) {
     for (int size : kSizes)
       p.points.push_back(
           {seq_key(s, size), repro_config("ipsc2", 1, "scanline", scene_path(o, s), size)});
-  for (const auto& sch : kSchemes)
+  for (const auto& sch : kKurcSchemes)
     for (const auto& s : kSpeedupScenes)
       for (int size : kSizes)
-        for (int n : kNodes)
+        for (int n : kKurcNodes)
           p.points.push_back(
               {su_key(sch, s, size, n), repro_config("ipsc2", n, sch, scene_path(o, s), size)});
   p.gantt = kurc_gantt();
