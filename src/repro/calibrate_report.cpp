@@ -53,7 +53,7 @@ std::string fmt(double v, int prec = 4) {
   return s.str();
 }
 
-std::string num(const nlohmann::json& v) {
+std::string json_num(const nlohmann::json& v) {
   return fmt(v.get<double>(), 6);
 }
 
@@ -74,31 +74,32 @@ void write_csvs(const nlohmann::json& fit, const std::string& dir) {
   t << "target,machine,quantity,paper,prior,fitted,rel_error_prior,rel_error_fitted\n";
   for (const auto& r : fit["targets"])
     t << r["id"].get<std::string>() << "," << r["machine"].get<std::string>() << ","
-      << r["quantity"].get<std::string>() << "," << num(r["paper"]) << "," << num(r["prior"]) << ","
-      << num(r["fitted"]) << "," << num(r["rel_error_prior"]) << "," << num(r["rel_error_fitted"])
-      << "\n";
+      << r["quantity"].get<std::string>() << "," << json_num(r["paper"]) << ","
+      << json_num(r["prior"]) << "," << json_num(r["fitted"]) << ","
+      << json_num(r["rel_error_prior"]) << "," << json_num(r["rel_error_fitted"]) << "\n";
   write_text_file(dir + "/targets.csv", t.str());
   std::ostringstream p;
   p << "cpu,operation,physical_cycles,fitted_cycles,ratio\n";
   for (const auto& r : fit["plausibility"])
     p << r["cpu"].get<std::string>() << "," << r["operation"].get<std::string>() << ","
-      << num(r["physical_cycles"]) << "," << num(r["fitted_cycles"]) << "," << num(r["ratio"])
-      << "\n";
+      << json_num(r["physical_cycles"]) << "," << json_num(r["fitted_cycles"]) << ","
+      << json_num(r["ratio"]) << "\n";
   write_text_file(dir + "/plausibility.csv", p.str());
   std::ostringstream c;
   c << "target,nodes,paper,predicted,rel_error,predicted_physical,rel_error_physical\n";
   for (const auto& r : fit["charles"])
-    c << r["id"].get<std::string>() << "," << r["nodes"].get<int>() << "," << num(r["paper"]) << ","
-      << num(r["predicted"]) << "," << num(r["rel_error"]) << "," << num(r["predicted_physical"])
-      << "," << num(r["rel_error_physical"]) << "\n";
+    c << r["id"].get<std::string>() << "," << r["nodes"].get<int>() << "," << json_num(r["paper"])
+      << "," << json_num(r["predicted"]) << "," << json_num(r["rel_error"]) << ","
+      << json_num(r["predicted_physical"]) << "," << json_num(r["rel_error_physical"]) << "\n";
   write_text_file(dir + "/charles_prediction.csv", c.str());
   if (fit.contains("selection")) {
     std::ostringstream sel;
     sel << "fixed_groups,free_parameters,median_abs_rel_error,worst_abs_rel_error,rms_rel_error\n";
     for (const auto& r : fit["selection"])
       sel << "\"" << r["fixed_groups"].get<std::string>() << "\"," << r["free_parameters"] << ","
-          << num(r["median_abs_rel_error"]) << "," << num(r.value("worst_abs_rel_error", 0.0))
-          << "," << num(r["rms_rel_error"]) << "\n";
+          << json_num(r["median_abs_rel_error"]) << ","
+          << json_num(r.value("worst_abs_rel_error", 0.0)) << "," << json_num(r["rms_rel_error"])
+          << "\n";
     write_text_file(dir + "/selection.csv", sel.str());
   }
   if (!fit.contains("crossval")) return;
@@ -107,8 +108,8 @@ void write_csvs(const nlohmann::json& fit, const std::string& dir) {
   for (const auto& f : fit["crossval"]["folds"])
     for (const auto& r : f["targets"])
       x << f["fold"].get<std::string>() << "," << r["id"].get<std::string>() << ","
-        << num(r["paper_ms"]) << "," << num(r["predicted_ms"]) << "," << num(r["rel_error"])
-        << "\n";
+        << json_num(r["paper_ms"]) << "," << json_num(r["predicted_ms"]) << ","
+        << json_num(r["rel_error"]) << "\n";
   write_text_file(dir + "/crossval.csv", x.str());
 }
 

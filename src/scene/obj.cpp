@@ -41,13 +41,6 @@ template <class F> void for_lines(const std::string& s, F&& f) {
   }
 }
 
-std::string_view keyword(std::string_view l) {
-  std::size_t j = 0;
-  while (j < l.size() && l[j] != ' ' && l[j] != '\t')
-    ++j;
-  return l.substr(0, j);
-}
-
 void need_numbers(const std::string& file, const Line& l, std::size_t min_count,
                   std::size_t max_count) {
   auto tok = text::split(l.text);
@@ -76,7 +69,7 @@ MtlInfo check_mtl(const std::string& path, const std::string& obj_file, int obj_
   std::string current;
   const std::string dir = text::directory_of(path);
   for_lines(s, [&](const Line& l) {
-    std::string_view k = keyword(l.text);
+    std::string_view k = text::keyword(l.text);
     auto tok = text::split(l.text);
     if (k == "newmtl") {
       if (tok.size() < 2) throw InputError(path, l.number, "newmtl needs a name");

@@ -18,9 +18,9 @@ bool blank(char c) {
 }
 
 // The text's lines: up to '\n', comments ('#' to the end) and surrounding blanks removed.
-class Lines {
+class TextLines {
 public:
-  explicit Lines(std::string_view s) : s_(s) {}
+  explicit TextLines(std::string_view s) : s_(s) {}
   // False at the end; else `line` (possibly empty), `raw` (the whole line) and its number.
   bool next(std::string_view& line, std::string_view& raw, int& number) {
     if (at_ >= s_.size()) return false;
@@ -46,13 +46,6 @@ private:
   int number_ = 0;
 };
 
-std::string_view keyword(std::string_view l) {
-  std::size_t j = 0;
-  while (j < l.size() && l[j] != ' ' && l[j] != '\t')
-    ++j;
-  return l.substr(0, j);
-}
-
 // The next blank-separated token of `rest` (empty at the end), removed from it.
 std::string_view token(std::string_view& rest) {
   std::size_t i = 0;
@@ -76,7 +69,7 @@ public:
     out_.materials_obj = "v 0 0 0\nf 1 1 1\n";
     std::string_view line, raw;
     int number = 0;
-    Lines lines(text_);
+    TextLines lines(text_);
     while (lines.next(line, raw, number))
       if (!line.empty()) read_line(line, raw, number);
     if (out_.face_size.empty()) throw InputError(path_, 0, "no faces");
@@ -89,9 +82,9 @@ private:
     std::size_t faces = 0;
     std::string_view line, raw;
     int number = 0;
-    Lines lines(text_);
+    TextLines lines(text_);
     while (lines.next(line, raw, number)) {
-      const std::string_view k = keyword(line);
+      const std::string_view k = text::keyword(line);
       if (k == "v")
         ++total_[0];
       else if (k == "vt")
@@ -170,7 +163,7 @@ private:
 
   void read_line(std::string_view line, std::string_view raw, int number) {
     line_ = number;
-    const std::string_view k = keyword(line);
+    const std::string_view k = text::keyword(line);
     std::string_view rest = line.substr(k.size());
     if (k == "v") {
       numbers(k, rest, 3, 3, 3, out_.positions);

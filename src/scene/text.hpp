@@ -20,6 +20,13 @@ std::optional<long long> to_int(std::string_view s);
 std::string fmt(double v); // shortest text that parses back to exactly v
 std::string fmt(float v);
 std::string lower(std::string_view s);
+// A line's keyword: its text up to the first space or tab.
+inline std::string_view keyword(std::string_view line) {
+  std::size_t j = 0;
+  while (j < line.size() && line[j] != ' ' && line[j] != '\t')
+    ++j;
+  return line.substr(0, j);
+}
 std::string read_file(const std::string& path);    // throws InputError(path, 0, ...) if unreadable
 std::string directory_of(const std::string& path); // "" or "dir/"
 std::string join_path(const std::string& dir, const std::string& rel);

@@ -114,7 +114,7 @@ struct Line {
   std::string text;
 };
 
-std::string num(double v) {
+std::string exact_num(double v) { // round-trips
   char b[32];
   std::snprintf(b, sizeof b, "%.17g", v);
   return b;
@@ -154,11 +154,12 @@ void write_paje_trace(const Timeline& tl, const std::string& topology, std::ostr
     add(0, -999, fields({"5", "0", c, "NODE", "m", quoted(n.label)}));
     for (const auto& p : n.phases) {
       if (!(p.end_s > p.begin_s)) continue; // an instant has no state to show
-      add(p.begin_s, 100 + p.depth, fields({"9", num(p.begin_s), "PHASE", c, quoted(p.name)}));
-      add(p.end_s, 0 - p.depth, fields({"10", num(p.end_s), "PHASE", c}));
+      add(p.begin_s, 100 + p.depth,
+          fields({"9", exact_num(p.begin_s), "PHASE", c, quoted(p.name)}));
+      add(p.end_s, 0 - p.depth, fields({"10", exact_num(p.end_s), "PHASE", c}));
     }
     for (const auto& a : n.activities)
-      add(a.begin_s, 200, fields({"8", num(a.begin_s), "ACTIVITY", c, a.name}));
+      add(a.begin_s, 200, fields({"8", exact_num(a.begin_s), "ACTIVITY", c, a.name}));
   }
   std::size_t key = 0;
   for (const auto& m : tl.messages) {
@@ -167,9 +168,9 @@ void write_paje_trace(const Timeline& tl, const std::string& topology, std::ostr
     const std::string tag = std::string("tag") += std::to_string(m["tag"].get<int>());
     const double t0 = m["send_start_s"], t1 = m["arrival_s"];
     add(t0, 300,
-        fields({"11", num(t0), "MESSAGE", "m", tag, node_alias(m["src"]), k,
-                num(m["bytes"].get<double>())}));
-    add(t1, 301, fields({"12", num(t1), "MESSAGE", "m", tag, node_alias(m["dst"]), k}));
+        fields({"11", exact_num(t0), "MESSAGE", "m", tag, node_alias(m["src"]), k,
+                exact_num(m["bytes"].get<double>())}));
+    add(t1, 301, fields({"12", exact_num(t1), "MESSAGE", "m", tag, node_alias(m["dst"]), k}));
   }
   for (const auto& [l, steps] : link_load(tl, topology)) {
     std::string c = "l";
@@ -177,7 +178,7 @@ void write_paje_trace(const Timeline& tl, const std::string& topology, std::ostr
     add(0, -998, fields({"5", "0", c, "LINK", "m", quoted(link_name(l, tl.nodes))}));
     add(0, -997, fields({"7", "0", "INFLIGHT", c, "0"}));
     for (const auto& [t, n] : steps)
-      add(t, 250, fields({"7", num(t), "INFLIGHT", c, std::to_string(n)}));
+      add(t, 250, fields({"7", exact_num(t), "INFLIGHT", c, std::to_string(n)}));
   }
   std::sort(lines.begin(), lines.end(), [](const Line& a, const Line& b) {
     return std::tie(a.t, a.order, a.seq) < std::tie(b.t, b.order, b.seq);
@@ -185,7 +186,7 @@ void write_paje_trace(const Timeline& tl, const std::string& topology, std::ostr
   out << kHeader;
   for (const auto& l : lines)
     out << l.text << "\n";
-  out << "6 " << num(tl.total_s) << " MACHINE m\n";
+  out << "6 " << exact_num(tl.total_s) << " MACHINE m\n";
 }
 
 } // namespace zc
