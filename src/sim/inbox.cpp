@@ -5,23 +5,25 @@
 namespace zc {
 
 void Inbox::Queue::push(TransitPtr m) {
-  if (!first)
+  if (!first) {
     first = std::move(m);
-  else
-    rest.push_back(std::move(m));
+    return;
+  }
+  if (!rest) rest = std::make_unique<std::vector<TransitPtr>>();
+  rest->push_back(std::move(m));
 }
 
 TransitPtr Inbox::Queue::remove(std::size_t i) {
   TransitPtr m;
   if (i == 0) {
     m = std::move(first);
-    if (!rest.empty()) {
-      first = std::move(rest.front());
-      rest.erase(rest.begin());
+    if (rest && !rest->empty()) {
+      first = std::move(rest->front());
+      rest->erase(rest->begin());
     }
   } else {
-    m = std::move(rest[i - 1]);
-    rest.erase(rest.begin() + std::ptrdiff_t(i - 1));
+    m = std::move((*rest)[i - 1]);
+    rest->erase(rest->begin() + std::ptrdiff_t(i - 1));
   }
   return m;
 }

@@ -10,6 +10,7 @@
 // that hearing from many sources one message at a time (an all-to-all) allocates nothing.
 // Any-source receives scan only the sources with something pending.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "sim/transit.hpp"
@@ -27,13 +28,19 @@ public:
   TransitPtr take(int src, int tag, double now, double& wake);
 
 private:
-  // One source's pending messages in send order: the oldest, then the others.
+  // One source's pending messages in send order: the oldest, then the others (16 bytes when
+  // there are none: an inbox has one a rank).
   struct Queue {
     TransitPtr first;
-    std::vector<TransitPtr> rest;
+    std::unique_ptr<std::vector<TransitPtr>> rest; // made when a second one is pending
+    Queue() = default;
+    Queue(const Queue& o)
+        : first(o.first),
+          rest(o.rest ? std::make_unique<std::vector<TransitPtr>>(*o.rest) : nullptr) {}
+    Queue(Queue&&) noexcept = default;
     bool empty() const { return !first; }
-    std::size_t size() const { return first ? 1 + rest.size() : 0; }
-    const TransitPtr& operator[](std::size_t i) const { return i == 0 ? first : rest[i - 1]; }
+    std::size_t size() const { return first ? 1 + (rest ? rest->size() : 0) : 0; }
+    const TransitPtr& operator[](std::size_t i) const { return i == 0 ? first : (*rest)[i - 1]; }
     void push(TransitPtr m);
     TransitPtr remove(std::size_t i);
   };
