@@ -45,13 +45,15 @@ def short(fn):
     return fn[-90:]
 
 
-def main():
-    d = sys.argv[1]
-    thr = float(sys.argv[2]) if len(sys.argv) > 2 else 2.0
+def phase_dumps(d):
+    """(report, phase order, {pid: {phase: [dump files]}}): each process's dumps made before a
+    phase_end, labelled with their phase (an animation's per-picture phases repeat after the
+    phases run once)."""
     rep = json.load(open(d + "/report.json"))
     order = [p["name"] for p in rep["phases"]]
     frames = int(rep.get("frames", 1) or 1)
     files = glob.glob(d + "/cg.*.*")
+    out = {}
     for pid in sorted({f.rsplit("/", 1)[1].split(".")[1] for f in files}):
         fs = sorted((f for f in files if f.rsplit("/", 1)[1].split(".")[1] == pid),
                     key=lambda f: int(f.rsplit(".", 1)[1]))
@@ -65,6 +67,15 @@ def main():
             else:
                 label = order[i % L]
             per.setdefault(label, []).append(f)
+        out[pid] = per
+    return rep, order, out
+
+
+def main():
+    d = sys.argv[1]
+    thr = float(sys.argv[2]) if len(sys.argv) > 2 else 2.0
+    _, order, dumps = phase_dumps(d)
+    for pid, per in dumps.items():
         for label in order:
             if label not in per:
                 continue

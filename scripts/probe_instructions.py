@@ -24,9 +24,13 @@ counters miss, or a loop whose instructions an operation differ from the probe's
 """
 import glob
 import json
+import os
 import re
 import statistics
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import mpi_profile  # noqa: E402  (the phases' dumps, labelled as mpi_profile.py prints them)
 
 sys.path.insert(0, __file__.rsplit("/", 1)[0])
 from mpi_profile import exclusive  # noqa: E402  (same directory)
@@ -106,30 +110,13 @@ def solve(loops, groups, blocks):
 
 def phase_instructions(d):
     """Instructions of each phase of node 0 (mpi_profile.py's labelling of the dumps)."""
-    rep = json.load(open(d + "/report.json"))
-    order = [p["name"] for p in rep["phases"]]
-    frames = int(rep.get("frames", 1) or 1)
-    files = glob.glob(d + "/cg.*.*")
-    pids = sorted({f.rsplit("/", 1)[1].split(".")[1] for f in files})
+    rep, _, per_process = mpi_profile.phase_dumps(d)
     out = {}
-    for pid in pids:
-        fs = sorted((f for f in files if f.rsplit("/", 1)[1].split(".")[1] == pid),
-                    key=lambda f: int(f.rsplit(".", 1)[1]))
-        ends = [f for f in fs if "dump-before=zc::RecordingContext::phase_end" in open(f).read(4000)]
-        if not ends:
-            continue
-        L = len(order)
-        once = L - (len(ends) - L) // (frames - 1) if frames > 1 and len(ends) > L else 0
-        per = {}
-        for i, f in enumerate(ends):
-            if frames > 1 and len(ends) > L:
-                label = order[i] if i < once else order[once + (i - once) % (L - once)]
-            else:
-                label = order[i % L]
-            per[label] = per.get(label, 0) + totals(f)[1]
+    for per in per_process.values():
+        inst = {label: sum(totals(f)[1] for f in fs) for label, fs in per.items()}
         # the process whose phases did the rendering (node 0; the host computer has fewer)
-        if len(per) > len(out):
-            out = per
+        if len(inst) > len(out):
+            out = inst
     return rep, out
 
 
