@@ -2,11 +2,17 @@
 
 #include <stdexcept>
 
+#include "sim/free_list.hpp"
+
 namespace zc {
 
 namespace sg = simgrid::s4u;
 
 namespace {
+struct OperatorDelete {
+  void operator()(void* p) const { ::operator delete(p); }
+};
+
 class SimSendRequest final : public SendRequest {
 public:
   SimSendRequest(Delivery& d, int self, TransitPtr m, NodeStats& s)
@@ -29,38 +35,25 @@ public:
   // A handle is made and dropped for every send: recycled through a free list of this thread
   // instead of the heap.
   static void* operator new(std::size_t n) {
-    auto& list = free_handles.list;
-    if (n != sizeof(SimSendRequest) || list.empty()) return ::operator new(n);
-    void* p = list.back();
-    list.pop_back();
-    return p;
+    void* p = n == sizeof(SimSendRequest) ? free_handles.take() : nullptr;
+    return p ? p : ::operator new(n);
   }
   static void operator delete(void* p, std::size_t n) {
     if (n == sizeof(SimSendRequest))
-      free_handles.list.push_back(p);
+      free_handles.give(p);
     else
       ::operator delete(p);
   }
 
 private:
-  struct FreeHandles {
-    std::vector<void*> list;
-    FreeHandles() = default;
-    FreeHandles(const FreeHandles&) = delete;
-    FreeHandles& operator=(const FreeHandles&) = delete;
-    ~FreeHandles() {
-      for (void* p : list)
-        ::operator delete(p);
-    }
-  };
-  static thread_local FreeHandles free_handles;
+  static thread_local FreeList<void, OperatorDelete> free_handles;
 
   Delivery& delivery_;
   int self_;
   TransitPtr msg_;
   NodeStats& stats_;
 };
-thread_local SimSendRequest::FreeHandles SimSendRequest::free_handles;
+thread_local FreeList<void, OperatorDelete> SimSendRequest::free_handles;
 } // namespace
 
 void SimComm::check_rank(int r, const char* what) const {

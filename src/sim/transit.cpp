@@ -1,31 +1,20 @@
 #include "sim/transit.hpp"
 
+#include <memory>
+
+#include "sim/free_list.hpp"
+
 namespace zc {
 
 namespace {
-// The Transits of this thread no one holds, freed with the thread.
-struct FreeTransits {
-  std::vector<Transit*> list;
-  FreeTransits() = default;
-  FreeTransits(const FreeTransits&) = delete;
-  FreeTransits& operator=(const FreeTransits&) = delete;
-  ~FreeTransits() {
-    for (Transit* t : list)
-      delete t;
-  }
-};
-thread_local FreeTransits free_transits;
+// The Transits of this thread no one holds.
+thread_local FreeList<Transit, std::default_delete<Transit>> free_transits;
 } // namespace
 
 TransitPtr TransitPtr::make() {
   TransitPtr p;
-  auto& list = free_transits.list;
-  if (list.empty()) {
-    p.t_ = new Transit{};
-  } else {
-    p.t_ = list.back();
-    list.pop_back();
-  }
+  p.t_ = free_transits.take();
+  if (!p.t_) p.t_ = new Transit{};
   p.t_->owners = 1;
   return p;
 }
@@ -38,7 +27,7 @@ void TransitPtr::recycle(Transit* t) {
   t->sent_at = 0;
   t->arrival = kNotYet;
   t->stage = t->next_channel = 0;
-  free_transits.list.push_back(t); // its holds stay, to be written over by the next message
+  free_transits.give(t); // its holds stay, to be written over by the next message
 }
 
 } // namespace zc
