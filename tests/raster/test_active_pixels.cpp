@@ -63,6 +63,18 @@ void expect_same_as_framebuffer(const ActivePixels& a, const Framebuffer& fb) {
   EXPECT_EQ(n, fb.covered());
 }
 
+// Same rows, same pixels in the same order: position, depth, winner and colour.
+void expect_same_pixels(const ActivePixels& got, const ActivePixels& want) {
+  EXPECT_EQ(got.row_begin, want.row_begin);
+  ASSERT_EQ(got.count(), want.count());
+  for (std::size_t i = 0; i < got.count(); ++i) {
+    EXPECT_EQ(got.pixels[i].x, want.pixels[i].x);
+    EXPECT_EQ(got.pixels[i].z, want.pixels[i].z);
+    EXPECT_EQ(got.pixels[i].id, want.pixels[i].id);
+    EXPECT_EQ(0, std::memcmp(got.pixels[i].rgb, want.pixels[i].rgb, 3));
+  }
+}
+
 } // namespace
 
 TEST(ActivePixels, EqualsPlainZBufferOnRandomScenes) {
@@ -129,14 +141,7 @@ TEST(ActivePixels, WireFormatRoundTrips) {
   ASSERT_GT(rows, 0u);
   auto bytes = serialize_sparse(part);
   EXPECT_EQ(bytes.size(), 4 + 8 * rows + kWirePixelBytes * part.count());
-  ActivePixels back = deserialize_sparse(bytes.data(), bytes.size(), 64, 0, 48);
-  EXPECT_EQ(back.row_begin, part.row_begin);
-  ASSERT_EQ(back.count(), part.count());
-  for (std::size_t i = 0; i < back.count(); ++i) {
-    EXPECT_EQ(back.pixels[i].x, part.pixels[i].x);
-    EXPECT_EQ(back.pixels[i].z, part.pixels[i].z);
-    EXPECT_EQ(back.pixels[i].id, part.pixels[i].id);
-  }
+  expect_same_pixels(deserialize_sparse(bytes.data(), bytes.size(), 64, 0, 48), part);
   EXPECT_THROW(deserialize_sparse(bytes.data(), bytes.size() - 1, 64, 0, 48), std::runtime_error);
 }
 
@@ -160,14 +165,7 @@ TEST(ActivePixels, MergeFromTheWireEqualsMergeAfterDeserialising) {
   const ActivePixels got = merge_active_sparse(mine, msg.data(), msg.size(), fused, received);
   EXPECT_EQ(received, select_rows(parts[1], kept).count());
   EXPECT_EQ(fused.list_merges, before.list_merges);
-  EXPECT_EQ(got.row_begin, want.row_begin);
-  ASSERT_EQ(got.count(), want.count());
-  for (std::size_t i = 0; i < got.count(); ++i) {
-    EXPECT_EQ(got.pixels[i].x, want.pixels[i].x);
-    EXPECT_EQ(got.pixels[i].z, want.pixels[i].z);
-    EXPECT_EQ(got.pixels[i].id, want.pixels[i].id);
-    EXPECT_EQ(0, std::memcmp(got.pixels[i].rgb, want.pixels[i].rgb, 3));
-  }
+  expect_same_pixels(got, want);
   EXPECT_THROW(merge_active_sparse(mine, msg.data(), msg.size() - 1, fused, received),
                std::runtime_error);
 }
