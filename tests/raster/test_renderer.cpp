@@ -233,28 +233,12 @@ TEST(Raster, ZFightingTieBreakIsOrderIndependent) {
   EXPECT_EQ(hashes[0], hashes[1]);
 }
 
-TEST(Raster, ImageAndCountersIndependentOfThreadCount) {
-  Scene s = base_scene(160, 120);
-  Rng rng{7};
-  for (int k = 0; k < 12; ++k)
-    add_sphere(s,
-               {float(rng.uniform() * 4 - 2), float(rng.uniform() * 3 - 1.5),
-                float(rng.uniform() * 2 - 1)},
-               float(0.3 + rng.uniform() * 0.6), 3);
-  const auto ref = render_scene(s, 1);
-  const std::string h = image_sha256(ref.image);
-  for (int t : {2, 3, 4, 7}) {
-    const auto r = render_scene(s, t);
-    EXPECT_EQ(image_sha256(r.image), h) << t << " threads";
-    EXPECT_EQ(r.counters, ref.counters) << t << " threads";
-  }
-}
-
 namespace {
 
-Scene spheres(int w, int h) {
+// Twelve recursion-3 spheres at seeded random places and sizes.
+Scene spheres(int w, int h, std::uint64_t seed = 11) {
   Scene s = base_scene(w, h);
-  Rng rng{11};
+  Rng rng{seed};
   for (int k = 0; k < 12; ++k)
     add_sphere(s,
                {float(rng.uniform() * 4 - 2), float(rng.uniform() * 3 - 1.5),
@@ -264,6 +248,17 @@ Scene spheres(int w, int h) {
 }
 
 } // namespace
+
+TEST(Raster, ImageAndCountersIndependentOfThreadCount) {
+  const Scene s = spheres(160, 120, 7);
+  const auto ref = render_scene(s, 1);
+  const std::string h = image_sha256(ref.image);
+  for (int t : {2, 3, 4, 7}) {
+    const auto r = render_scene(s, t);
+    EXPECT_EQ(image_sha256(r.image), h) << t << " threads";
+    EXPECT_EQ(r.counters, ref.counters) << t << " threads";
+  }
+}
 
 TEST(Raster, BandsAndChunksDrawWhatOnePassDraws) {
   // The renderer draws in row bands sized to the cache and in chunks of triangles (small ones on
