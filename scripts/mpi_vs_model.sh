@@ -58,7 +58,8 @@ start=$(date +%s)
   echo "single_copy=$single_copy"
 } >"$out/conditions.txt"
 
-# 1. The probe (two ranks: the network needs a peer; the CPU loops run on both and are averaged).
+# 1. The probe (two ranks: the network needs a peer; the CPU loops run on rank 0 alone, for the
+# platform of one node, then on both at once, averaged, for the platforms of several).
 mpirun -np 2 "$zcube" probe --out "$out/cluster.xml" --nodes 1,2,4 --json "$out/probe.json" \
   --seconds "$seconds" >"$out/probe.txt"
 

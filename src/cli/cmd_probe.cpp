@@ -50,13 +50,17 @@ static int cmd_probe(std::vector<std::string> args) {
             << n["startup_short_s"].get<double>() * 1e6 << " us (short), "
             << n["startup_long_s"].get<double>() * 1e6 << " us (long), "
             << 1e-6 / std::max(n["per_byte_s"].get<double>(), 1e-300) << " MB/s, both ways "
-            << n["both_ways_Bps"].get<double>() * 1e-6 << " MB/s in all (0: no limit)\n"
-            << "CPU (ns): vertex " << m["cost"]["cost_vertices_transformed"].get<double>() * 1e9
-            << ", triangle set-up " << m["cost"]["cost_triangles_setup"].get<double>() * 1e9
-            << ", span " << m["cost"]["cost_spans"].get<double>() * 1e9 << ", fragment "
-            << m["cost"]["cost_pixels_generated"].get<double>() * 1e9 << ", merge "
-            << m["cost"]["cost_merge_ops"].get<double>() * 1e9 << ", byte copied "
-            << m["cost"]["cost_bytes_packed"].get<double>() * 1e9 << "\n";
+            << n["both_ways_Bps"].get<double>() * 1e-6 << " MB/s in all (0: no limit)\n";
+  auto cpu = [&](const char* what, const nlohmann::json& c) {
+    std::cout << what << " (ns): vertex " << c["cost_vertices_transformed"].get<double>() * 1e9
+              << ", triangle set-up " << c["cost_triangles_setup"].get<double>() * 1e9 << ", span "
+              << c["cost_spans"].get<double>() * 1e9 << ", fragment "
+              << c["cost_pixels_generated"].get<double>() * 1e9 << ", merge "
+              << c["cost_merge_ops"].get<double>() * 1e9 << ", byte copied "
+              << c["cost_bytes_packed"].get<double>() * 1e9 << "\n";
+  };
+  cpu("CPU, one rank alone (one node)", m["cost_alone"]);
+  cpu("CPU, every rank at once (several nodes)", m["cost"]);
   for (const auto& p : m["platforms"])
     std::cout << "wrote " << p["file"].get<std::string>() << " (" << p["nodes"] << " nodes, "
               << p["topology"].get<std::string>() << "): zcube run --machine "

@@ -1,6 +1,7 @@
 #include "mpi/probe.hpp"
 
 #include <mpi.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -29,6 +30,30 @@ std::vector<std::string> probe_outputs(const ProbeOptions& o, int ranks) {
   return v;
 }
 
+namespace {
+
+nlohmann::json cost_json(CostTable t) {
+  nlohmann::json c = nlohmann::json::object();
+  for (auto& [id, v] : t.fields())
+    c[id] = *v;
+  return c;
+}
+
+// A barrier whose waiting ranks sleep instead of polling (MPI_Barrier spins): while rank 0 times
+// its loops alone, the other cores stay idle.
+void sleeping_barrier() {
+  MPI_Request r = MPI_REQUEST_NULL;
+  MPI_Ibarrier(MPI_COMM_WORLD, &r);
+  for (int done = 0;;) {
+    MPI_Test(&r, &done, MPI_STATUS_IGNORE);
+    if (done) return;
+    const timespec ms{0, 1000000};
+    nanosleep(&ms, nullptr);
+  }
+}
+
+} // namespace
+
 nlohmann::json probe_cluster(const ProbeOptions& o) {
   int rank = 0, size = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -39,17 +64,18 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
   for (int p : o.nodes)
     if (p < 1) throw UsageError("probe --nodes: node counts must be positive");
   const NetFit net = measure_network(rank, size);
+  // The CPU twice: rank 0 alone while the others sleep (what a one-node run has: the other cores
+  // idle), then every rank at once (a run on several nodes: every core busy, sharing the memory
+  // system and the last-level cache).
+  nlohmann::json solo_log = nlohmann::json::object();
+  CostTable solo;
+  if (rank == 0) solo = measure_cpu(o.root, o.seconds, solo_log);
+  sleeping_barrier();
   nlohmann::json cpu_log = nlohmann::json::array();
   const CostTable mine_cost = measure_cpu(o.root, o.seconds, cpu_log);
-  nlohmann::json cost_json = nlohmann::json::object();
-  {
-    CostTable t = mine_cost;
-    for (auto& [id, v] : t.fields())
-      cost_json[id] = *v;
-  }
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
   const nlohmann::json mine = {{"host", processor_name()},
-                               {"cost", cost_json},
+                               {"cost", cost_json(mine_cost)},
                                {"cpu", cpu_log},
                                {"memory", double(pages) * double(page)}};
   const std::string text = mine.dump();
@@ -99,7 +125,6 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
   spec.net.switching = Switching::Circuit;
   spec.net.host_startup_s = net.short_s;
   spec.net.host_per_byte_s = net.per_byte_s;
-  spec.cost = avg;
   spec.cost_calibrated = true;
   const auto outs = probe_outputs(o, size);
   std::vector<int> counts = o.nodes.empty() ? std::vector<int>{size} : o.nodes;
@@ -108,6 +133,9 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
     const int P = counts[i];
     // A power of two is a hypercube (per-hop cost 0, so only contention differs), else a ring.
     const Topology topo = (P & (P - 1)) == 0 ? Topology::Cube : Topology::Ring;
+    // One node computes alone; several share the machine's cores, memory and cache as the ranks
+    // did that timed their loops at once (more nodes than ranks: as many cores busy as ranks).
+    spec.cost = P == 1 ? solo : avg;
     std::ofstream f(outs[i]);
     f << platform_xml(spec, P, topo);
     if (!f) throw InputError(outs[i], 0, "cannot write the platform file");
@@ -124,13 +152,9 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
             {"exchanges", net.exchanges},
             {"ranges", net.ranges},
             {"samples", net.samples}}},
-          {"cost",
-           [&] {
-             nlohmann::json c = nlohmann::json::object();
-             for (auto& [id, v] : avg.fields())
-               c[id] = *v;
-             return c;
-           }()},
+          {"cost", cost_json(avg)},
+          {"cost_alone", cost_json(solo)},
+          {"cpu_alone", solo_log},
           {"ranks", per_rank},
           {"memory_bytes_per_node", spec.memory_bytes},
           {"platforms", written},

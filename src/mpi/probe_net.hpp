@@ -13,7 +13,9 @@ struct NetFit {
   // Seconds a byte of each of two messages crossing at once (exchanges of 1-16 MiB): the fit, and
   // the fit kept within [per_byte_s, 2 per_byte_s] (one message alone; two taking turns).
   double both_busy_fit_s = 0, both_busy_per_byte_s = 0;
-  nlohmann::json samples = nlohmann::json::array();   // peer, bytes, one_way_s (the fastest)
+  nlohmann::json samples =
+      nlohmann::json::array(); // peer, bytes, one_way_s (the fastest), fitted_s
+  // (bounded by the larger sizes)
   nlohmann::json exchanges = nlohmann::json::array(); // peer, bytes, seconds (the fastest)
   nlohmann::json ranges = nlohmann::json::array();    // the piecewise fit: from, to, startup, rate
 };

@@ -120,7 +120,22 @@ probe)
   rc=$?
   { [ $rc = 2 ] && [ "$(wc -l <"$tmp/err")" = 1 ] && grep -q "bad.json" "$tmp/err"; } ||
     bad "compare of a bad file: exit $rc, $(cat "$tmp/err")"
-  [ "$fail" = 0 ] && echo "ok   probe -> platform -> prediction; compare"
+  # One node's platform takes the costs rank 0 timed alone, two nodes' the ranks' timed at once.
+  mpi 2 probe --out "$tmp/c.xml" --nodes 1,2 --json "$tmp/c.json" --seconds 0.02 >"$tmp/out" 2>&1 ||
+    bad "probe --nodes 1,2: $(tail -3 "$tmp/out")"
+  python3 - "$tmp" >"$tmp/costs" 2>&1 <<'PY' || bad "probe's costs per node count: $(cat "$tmp/costs")"
+import json, re, sys
+d = sys.argv[1]
+j = json.load(open(d + "/c.json"))
+for xml, key in (("c-1.xml", "cost_alone"), ("c-2.xml", "cost")):
+    text = open(f"{d}/{xml}").read()
+    speed = float(re.search(r'host id="node0" speed="([0-9.]+)Mf"', text).group(1)) * 1e6
+    for f, v in re.findall(r'id="zcube\.cycles\.([a-z_]+)" value="([^"]+)"', text):
+        want = j[key]["cost_" + f] * speed
+        assert abs(float(v) - want) <= 1e-9 * max(1.0, abs(want)), (xml, f, v, want)
+assert j["cost_alone"] != j["cost"], "the two tables are the same measurement"
+PY
+  [ "$fail" = 0 ] && echo "ok   probe -> platform -> prediction; compare; costs alone and at once"
   ;;
 validate)
   # scripts/mpi_vs_model.sh end to end on small workloads (one run each, the processes' CPU-time
