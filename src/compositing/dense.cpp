@@ -111,7 +111,7 @@ private:
 };
 
 // The covered locations of the rows held, as pixel records: every location of those rows is read
-// (charged as the bytes it scans) and each covered one becomes a record.
+// for its coverage (a location scanned) and each covered one becomes a record, field by field.
 ActivePixels Dense::final_pixels(Counters& w) {
   ActivePixels a;
   a.width = full_.width();
@@ -132,8 +132,9 @@ ActivePixels Dense::final_pixels(Counters& w) {
     }
     a.row_begin[std::size_t(y - a.y0) + 1] = std::uint32_t(a.pixels.size());
   }
-  w.bytes_packed += Framebuffer::kLocationBytes * std::size_t(a.width) * rows +
-                    sizeof(WinningPixel) * a.pixels.size();
+  w.locations_scanned += std::uint64_t(a.width) * rows;
+  w.records_packed += a.pixels.size();
+  w.bytes_packed += sizeof(WinningPixel) * a.pixels.size();
   return a;
 }
 

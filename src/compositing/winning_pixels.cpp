@@ -84,7 +84,8 @@ private:
       return 0;
     }
     std::uint64_t load = 0;
-    for (const Message& m : in) {
+    for (std::size_t i = 0; i < in.size(); ++i) {
+      const Message& m = in[i];
       const double received = double(m.charged);
       n.memory.alloc(received, "receive buffer");
       const Bytes& b = m.payload;
@@ -95,7 +96,9 @@ private:
       n.memory.release(held_ + gathered_ + received);
       held_ = enc_.held(mine_, rec_);
       gathered_ = 0;
-      keep_ = mine_;
+      // A next message merges into the merged pixels; after the last, nothing is kept apart
+      // (copying the merged array is zcube's work, which no counter prices).
+      keep_ = i + 1 < in.size() ? mine_ : ActivePixels{};
     }
     return load;
   }

@@ -10,6 +10,7 @@
 
 #include "algo/composite.hpp"
 #include "algo/elastic_partition.hpp"
+#include "compositing/dense.hpp"
 #include "compositing/gather.hpp"
 #include "compositing/winning_pixels.hpp"
 #include "raster/active_pixels.hpp"
@@ -68,6 +69,7 @@ enum Group : std::size_t {
   kPixels,
   kSort,
   kScanline,
+  kScan,
   kGroups
 };
 
@@ -87,7 +89,8 @@ const std::vector<CostGroup>& probe_groups() {
       {"pixels",
        {"pixels_generated", "pixels_tested", "pixels_written", "pixels_final", "texels_fetched"}},
       {"sort", {"sort_steps"}},
-      {"scanline", {"wpa_tested", "wpa_appended"}}};
+      {"scanline", {"wpa_tested", "wpa_appended"}},
+      {"scan", {"locations_scanned"}}};
   return g;
 }
 
@@ -102,6 +105,7 @@ enum BlockId : std::size_t {
   kMergeLoops,
   kListMergeLoops,
   kOutputLoops,
+  kDenseOutputLoops,
   kZbufferLoops,
   kSpanListLoops,
   kActiveLoops,
@@ -123,6 +127,7 @@ const std::vector<Block>& blocks() {
       {"location merge", {kMerge}},
       {"active merge", {kListMerge}},
       {"sparse output", {kRecords}},
+      {"dense output", {kScan}},
       // The frame-buffer z-buffer: a triangle's edges, its spans (found and started), its
       // fragments; the scenes' and sizes' different mixes separate them.
       {"z-buffer", {kEdges, kSpans, kPixels}},
@@ -291,6 +296,14 @@ void render_loops(Probe& p, const Picture& pic, bool kurc) {
           compositing::pack_pixels(wpa, compositing::sparse_message, kurc_pixel_records(), c));
       compositing::paste(parts, picture, size, c);
     });
+    // ZBUF-EXC's final pixels (compositing/dense.cpp): every location of a full z-buffer of this
+    // picture scanned, each covered one made a record.
+    Framebuffer full = nr.make_framebuffer(RowSet::all(size));
+    scatter_active(wpa, full);
+    const auto dense = compositing::dense(std::move(full), kurc_pixel_records());
+    p.time(kDenseOutputLoops, pic.name, [&](Counters& c) { (void)dense->final_pixels(c); });
+    p.run();
+    return;
   }
   p.run();
 }

@@ -243,31 +243,57 @@ bool has_avx2() {
 }
 #endif
 
+FlatSpan flat(const ScreenTriangle& t, const ShadeContext& ctx, Framebuffer& fb) {
+  return {fb.depth().data(),
+          fb.ids().data(),
+          fb.rgb().data(),
+          t.z.ax,
+          t.r.ax,
+          t.g.ax,
+          t.b.ax,
+          (*ctx.materials)[t.material].kd,
+          t.id};
+}
+
+// One span of an untextured triangle: its start values, then its pixels.
+void flat_row(const ScreenTriangle& t, const FlatSpan& s, int y, int x0, int x1, Framebuffer& fb,
+              std::uint64_t& written, std::uint64_t& first) {
+  const double row[4] = {t.z.row(y), t.r.row(y), t.g.row(y), t.b.row(y)};
+  const std::size_t i = fb.index(x0, y);
+#ifdef ZC_FLAT_SPAN_AVX2
+  if (has_avx2() && x1 - x0 >= 2) { // shorter spans: the scalar loop measured faster
+    flat_span_avx2(s, row, x0, x1, i, written, first);
+    return;
+  }
+#endif
+  flat_span(s, row, x0, x1, i, written, first);
+}
+
+// One span of a textured triangle, pixel by pixel through its row shader.
+void shaded_row(const ScreenTriangle& t, const TriangleBatch& batch, const ShadeContext& ctx, int y,
+                int x0, int x1, Framebuffer& fb, Counters& c, std::uint64_t* newly_covered) {
+  const RowShader rs(t, batch, ctx, y);
+  std::size_t i = fb.index(x0, y);
+  auto& depth = fb.depth();
+  auto& ids = fb.ids();
+  for (int x = x0; x <= x1; ++x, ++i) {
+    const float z = rs.depth(x);
+    if (!in_front(z, t.id, depth[i], ids[i])) continue;
+    std::uint8_t rgb[3];
+    rs.color(x, rgb, c);
+    if (newly_covered) *newly_covered += ids[i] == kNoTriangle;
+    fb.test_and_write(i, z, t.id, rgb);
+    ++c.pixels_written;
+  }
+}
+
 void draw_untextured(const ScreenTriangle& t, const ShadeContext& ctx, const RowSet& rows,
                      Framebuffer& fb, Counters& c, std::uint64_t* newly_covered) {
-  const FlatSpan s{fb.depth().data(),
-                   fb.ids().data(),
-                   fb.rgb().data(),
-                   t.z.ax,
-                   t.r.ax,
-                   t.g.ax,
-                   t.b.ax,
-                   (*ctx.materials)[t.material].kd,
-                   t.id};
-#ifdef ZC_FLAT_SPAN_AVX2
-  const bool avx2 = has_avx2();
-#endif
+  const FlatSpan s = flat(t, ctx, fb);
   std::uint64_t spans = 0, generated = 0, written = 0, first = 0;
   for_each_span(t, rows, fb.width(), [&](int y, int x0, int x1) {
     ++spans;
-    const double row[4] = {t.z.row(y), t.r.row(y), t.g.row(y), t.b.row(y)};
-    const std::size_t i = fb.index(x0, y);
-#ifdef ZC_FLAT_SPAN_AVX2
-    if (avx2 && x1 - x0 >= 2) // shorter spans: the scalar loop measured faster
-      flat_span_avx2(s, row, x0, x1, i, written, first);
-    else
-#endif
-      flat_span(s, row, x0, x1, i, written, first);
+    flat_row(t, s, y, x0, x1, fb, written, first);
     generated += std::uint64_t(x1 - x0 + 1);
   });
   c.spans += spans;
@@ -291,23 +317,26 @@ void draw_triangle(const ScreenTriangle& t, const TriangleBatch& batch, const Sh
   for_each_span(t, rows, fb.width(), [&](int y, int x0, int x1) {
     ++c.spans;
     ++c.span_starts;
-    const RowShader rs(t, batch, ctx, y);
-    std::size_t i = fb.index(x0, y);
-    auto& depth = fb.depth();
-    auto& ids = fb.ids();
-    for (int x = x0; x <= x1; ++x, ++i) {
-      const float z = rs.depth(x);
-      if (!in_front(z, t.id, depth[i], ids[i])) continue;
-      std::uint8_t rgb[3];
-      rs.color(x, rgb, c);
-      if (newly_covered) *newly_covered += ids[i] == kNoTriangle;
-      fb.test_and_write(i, z, t.id, rgb);
-      ++c.pixels_written;
-    }
+    shaded_row(t, batch, ctx, y, x0, x1, fb, c, newly_covered);
     const std::uint64_t n = std::uint64_t(x1 - x0 + 1);
     c.pixels_generated += n;
     c.pixels_tested += n;
   });
+}
+
+void draw_span(const ScreenTriangle& t, const TriangleBatch& batch, const ShadeContext& ctx, int y,
+               int x0, int x1, Framebuffer& fb, Counters& c) {
+  ++c.span_starts;
+  const std::uint64_t n = std::uint64_t(x1 - x0 + 1);
+  c.pixels_generated += n;
+  c.pixels_tested += n;
+  if (t.tex >= 0) {
+    shaded_row(t, batch, ctx, y, x0, x1, fb, c, nullptr);
+    return;
+  }
+  std::uint64_t written = 0, first = 0;
+  flat_row(t, flat(t, ctx, fb), y, x0, x1, fb, written, first);
+  c.pixels_written += written;
 }
 
 void draw_batch(const TriangleBatch& batch, const ShadeContext& ctx, Framebuffer& fb, Counters& c) {

@@ -112,6 +112,13 @@ void draw_triangle(const ScreenTriangle& t, const TriangleBatch& batch, const Sh
                    const RowSet& rows, Framebuffer& fb, Counters& c,
                    std::uint64_t* newly_covered = nullptr);
 
+// Pixels [x0, x1] of row y of `t` (a span found before, e.g. from Kurc et al.'s span lists)
+// z-buffered into `fb`: the span started from its planes, then the same pixel loop as
+// draw_triangle's (eight pixels at a time when untextured), so the same pixels bit for bit. Counts
+// the span start and the fragments (generated, tested, written), not the span nor an edge walk.
+void draw_span(const ScreenTriangle& t, const TriangleBatch& batch, const ShadeContext& ctx, int y,
+               int x0, int x1, Framebuffer& fb, Counters& c);
+
 // Draws every triangle of a batch, in order.
 void draw_batch(const TriangleBatch& batch, const ShadeContext& ctx, Framebuffer& fb, Counters& c);
 

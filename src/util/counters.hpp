@@ -34,10 +34,11 @@ struct Counters {
   std::uint64_t wpa_appended = 0; // fragments appended to the WPA without comparison (§2)
   // Loops that profiling the MPI backend's runs found uncounted (docs/machines.md, "What profiling
   // the real runs found"):
-  std::uint64_t edge_walks = 0;      // triangles' edges set up to walk their rows (a pass each)
-  std::uint64_t span_starts = 0;     // spans started: start values from the planes
-  std::uint64_t sort_steps = 0;      // comparison-sort steps: n ceil(log2 n) for a list of n
-  std::uint64_t records_packed = 0;  // records gathered into / scattered out of messages
+  std::uint64_t edge_walks = 0;        // triangles' edges set up to walk their rows (a pass each)
+  std::uint64_t span_starts = 0;       // spans started: start values from the planes
+  std::uint64_t sort_steps = 0;        // comparison-sort steps: n ceil(log2 n) for a list of n
+  std::uint64_t records_packed = 0;    // records gathered into / scattered out of messages
+  std::uint64_t locations_scanned = 0; // z-buffer locations read for their coverage, in a scan
 
   Counters& operator+=(const Counters& o);
   friend Counters operator+(Counters a, const Counters& b) { return a += b; }
@@ -45,7 +46,8 @@ struct Counters {
   bool operator==(const Counters&) const = default;
 };
 
-// The steps a comparison sort counts for a list of n records: n ceil(log2 n) (a merge sort's passes).
+// The steps a comparison sort counts for a list of n records: n ceil(log2 n) (a merge sort's
+// passes).
 constexpr std::uint64_t sort_steps(std::uint64_t n) {
   std::uint64_t log = 0;
   while ((std::uint64_t(1) << log) < n)
@@ -82,6 +84,7 @@ void from_json(const nlohmann::json& j, Counters& c); // absent fields are 0
   X(edge_walks)                                                                                    \
   X(span_starts)                                                                                   \
   X(sort_steps)                                                                                    \
-  X(records_packed)
+  X(records_packed)                                                                                \
+  X(locations_scanned)
 
 } // namespace zc
