@@ -77,8 +77,7 @@ private:
     for (auto [y0, y1] : kept_) {
       const std::size_t bytes = std::size_t(y1 - y0) * W * Framebuffer::kLocationBytes;
       if (at + bytes > payload.size()) throw std::logic_error("dense: a message short of its rows");
-      const Bytes run(payload.begin() + long(at), payload.begin() + long(at + bytes));
-      merged += full_.merge_locations(run, std::size_t(y0) * W);
+      merged += full_.merge_locations(payload.data() + at, bytes, std::size_t(y0) * W);
       at += bytes;
     }
     return merged;
@@ -91,7 +90,10 @@ private:
     Bytes rows;
     for (auto [y0, y1] : band) {
       Bytes b = full_.pack_locations(std::size_t(y0) * W, std::size_t(y1 - y0) * W);
-      rows.insert(rows.end(), b.begin(), b.end());
+      if (rows.empty())
+        rows = std::move(b); // one band (the usual case): its packed bytes are the payload
+      else
+        rows.insert(rows.end(), b.begin(), b.end());
       m.charged += std::size_t(y1 - y0) * W * rec_.location;
     }
     m.payload = std::move(rows);

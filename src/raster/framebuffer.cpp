@@ -77,19 +77,20 @@ std::vector<std::uint8_t> Framebuffer::pack_locations(std::size_t first, std::si
   return out;
 }
 
-std::size_t Framebuffer::merge_locations(const std::vector<std::uint8_t>& msg, std::size_t first) {
-  const std::size_t n = msg.size() / kLocationBytes;
-  if (msg.size() % kLocationBytes != 0 || first + n > ids_.size())
+std::size_t Framebuffer::merge_locations(const std::uint8_t* msg, std::size_t size,
+                                         std::size_t first) {
+  const std::size_t n = size / kLocationBytes;
+  if (size % kLocationBytes != 0 || first + n > ids_.size())
     throw std::runtime_error("Framebuffer::merge_locations: message does not fit the buffer");
   // Depths and ids read in place (unaligned loads), not copied out into arrays of their own first.
-  const std::uint8_t* zs = msg.data() + 3 * n;
-  const std::uint8_t* ids = msg.data() + 7 * n;
+  const std::uint8_t* zs = msg + 3 * n;
+  const std::uint8_t* ids = msg + 7 * n;
   for (std::size_t k = 0; k < n; ++k) {
     float z;
     std::uint32_t id;
     std::memcpy(&z, zs + 4 * k, 4);
     std::memcpy(&id, ids + 4 * k, 4);
-    test_and_write(first + k, z, id, msg.data() + 3 * k);
+    test_and_write(first + k, z, id, msg + 3 * k);
   }
   return n;
 }

@@ -74,7 +74,11 @@ public:
   std::vector<std::uint8_t> pack_locations(std::size_t first, std::size_t count) const;
   // Z-buffers such a message into the locations from index `first` (test_and_write at each);
   // returns the number of locations it held.
-  std::size_t merge_locations(const std::vector<std::uint8_t>& msg, std::size_t first);
+  std::size_t merge_locations(const std::vector<std::uint8_t>& msg, std::size_t first) {
+    return merge_locations(msg.data(), msg.size(), first);
+  }
+  // The same over `size` bytes at `msg` (a run of a larger message, read in place).
+  std::size_t merge_locations(const std::uint8_t* msg, std::size_t size, std::size_t first);
   // Copy the rows of `part` (a band or interleaved set) into this buffer (strip pasting).
   void paste(const Framebuffer& part);
 
