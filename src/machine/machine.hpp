@@ -45,6 +45,10 @@ struct NetworkParams {
   // 1.7 MB/s one way but 2.35 MB/s in all both ways (docs/machines.md): each direction then moves
   // half of it.
   double both_ways_Bps = 0;
+  // What a message is charged: the modelled program's records (Message::charged, the papers'
+  // record sizes: false), or the bytes zcube's own payloads hold (true), for a machine whose
+  // programs are zcube's (a cluster `zcube probe` measured: its MPI backend moves the payloads).
+  bool charge_payloads = false;
 
   // True when a direction slows down while the other direction of its link also carries data.
   bool half_duplex_limited() const {

@@ -189,6 +189,7 @@ std::string platform_xml(const MachineSpec& spec, int nodes, Topology topo,
                                       {{1073741824.0, "Gi"}, {1048576.0, "Mi"}, {1024.0, "Ki"}}));
   prop("zcube.os_resident", with_unit(spec.os_resident_bytes, "B",
                                       {{1073741824.0, "Gi"}, {1048576.0, "Mi"}, {1024.0, "Ki"}}));
+  if (n.charge_payloads) prop("zcube.messages", "payloads");
   CostTable cost = spec.cost;
   for (auto& [id, v] : cost.fields()) // "cost_<field>" -> "zcube.cycles.<field>"
     prop("zcube.cycles." + id.substr(5), format_double(*v * clock));

@@ -123,6 +123,9 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
   spec.net.both_ways_Bps =
       net.both_busy_per_byte_s > net.per_byte_s ? 2.0 / net.both_busy_per_byte_s : 0.0;
   spec.net.switching = Switching::Circuit;
+  // The cluster's programs are zcube's: its messages move zcube's payloads (13 bytes a winning
+  // pixel, 11 a z-buffer location), not the papers' records (9, 7).
+  spec.net.charge_payloads = true;
   spec.net.host_startup_s = net.short_s;
   spec.net.host_per_byte_s = net.per_byte_s;
   spec.cost_calibrated = true;

@@ -137,8 +137,8 @@ void check_units(const std::string& xml, const std::string& label) {
 void check_zcube_properties(const std::string& xml, const std::string& label) {
   static const std::regex prop(
       R"re(<prop\b[^>]*\bid\s*=\s*(?:"(zcube\.[^"]*)"|'(zcube\.[^']*)'))re");
-  std::set<std::string> known = {"zcube.machine", "zcube.topology", "zcube.switching",
-                                 "zcube.node_memory", "zcube.os_resident"};
+  std::set<std::string> known = {"zcube.machine",     "zcube.topology",    "zcube.switching",
+                                 "zcube.node_memory", "zcube.os_resident", "zcube.messages"};
   CostTable cycles;
   for (auto& [id, v] : cycles.fields())
     known.insert("zcube.cycles." + id.substr(5));
@@ -465,6 +465,13 @@ PlatformModel read_platform(const sg::Engine& e, const std::string& where) {
   if (const char* os = z->get_property("zcube.os_resident")) {
     m.os_resident = parse_bytes(os, where + ": zcube.os_resident", Unit::Required);
     checked(m.os_resident, where, "zcube.os_resident", 0, false);
+  }
+  // What a message is charged (NetworkParams::charge_payloads); files without it: the records.
+  if (const char* msgs = z->get_property("zcube.messages")) {
+    if (std::string(msgs) != "records" && std::string(msgs) != "payloads")
+      throw InputError(
+          where, 0, "zcube.messages = '" + std::string(msgs) + "': expected records or payloads");
+    m.net.charge_payloads = std::string(msgs) == "payloads";
   }
   CostTable cycles;
   for (auto& [id, v] : cycles.fields()) {

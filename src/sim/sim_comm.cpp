@@ -65,6 +65,7 @@ void SimComm::check_rank(int r, const char* what) const {
 SendHandle SimComm::post(int dst, int tag, Message msg, std::size_t payload_bytes, Blocks blocks,
                          bool bundle) {
   check_rank(dst, "send");
+  if (charge_payloads_) msg.charged = payload_bytes;
   // NodeStats::count_send, with the current phase's entry remembered between sends.
   if (!phase_traffic_ || traffic_phase_ != stats_.phase) {
     phase_traffic_ = &stats_.phase_traffic[stats_.phase];

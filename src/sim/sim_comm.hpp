@@ -12,8 +12,12 @@ namespace zc {
 
 class SimComm final : public Comm {
 public:
-  SimComm(int rank, int nodes, Topology topology, Delivery& delivery, NodeStats& stats)
-      : rank_(rank), nodes_(nodes), topology_(topology), delivery_(delivery), stats_(stats) {}
+  // `charge_payloads`: every message charged its payload's bytes instead of its records'
+  // (NetworkParams::charge_payloads).
+  SimComm(int rank, int nodes, Topology topology, Delivery& delivery, NodeStats& stats,
+          bool charge_payloads = false)
+      : rank_(rank), nodes_(nodes), topology_(topology), delivery_(delivery), stats_(stats),
+        charge_payloads_(charge_payloads) {}
 
   int rank() const override { return rank_; }
   int size() const override { return nodes_; }
@@ -42,6 +46,7 @@ private:
   NodeStats& stats_;
   Traffic* phase_traffic_ = nullptr; // stats_.phase_traffic[traffic_phase_], while it runs
   std::string traffic_phase_;
+  bool charge_payloads_;
 };
 
 } // namespace zc

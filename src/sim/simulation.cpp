@@ -137,7 +137,8 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   std::vector<FrameImage> images;
   const SceneFacts facts = scene_facts(scene); // once for all the nodes
   for (int r = 0; r <= P; ++r) {
-    comms.push_back(std::make_unique<SimComm>(r, P, pm.topology, delivery, stats[r]));
+    comms.push_back(
+        std::make_unique<SimComm>(r, P, pm.topology, delivery, stats[r], pm.net.charge_payloads));
     const CostTable cost = r < P ? pm.cost[r] : pm.cost[0];
     const double mem = r < P ? pm.memory[r] : 0.0; // the host computer is not memory-bound
     ctxs.push_back(std::make_unique<SimContext>(*comms[r], stats[r], scene, facts, options, cost,
