@@ -2,7 +2,8 @@
 """Measured (MPI backend) against predicted (simulator on the probed platform), phase by phase.
 
 usage: mpi_compare.py OUT CORES
-Reads OUT/measured.csv (every run's phase times), OUT/predicted/<workload>-<P>.json (reports made
+Reads OUT/measured.csv (every run's phase times), OUT/core_share.csv (each run's core share, if
+there), OUT/predicted/<workload>-<P>.json (reports made
 before the measured runs), OUT/probe.txt and OUT/conditions.txt; writes OUT/comparison.csv and
 OUT/README.md. A point is measured as the median of its runs; the spread is (max - min) / median.
 """
@@ -53,6 +54,11 @@ def main():
         for line in open(os.path.join(out, "conditions.txt"))
         if "=" in line
     )
+    shares = {}  # (workload, P) -> [the lowest rank's core share, per run]
+    share_csv = os.path.join(out, "core_share.csv")
+    if os.path.exists(share_csv):
+        for r in csv.DictReader(open(share_csv)):
+            shares.setdefault((r["workload"], int(r["nodes"])), []).append(float(r["core_share"]))
     rows, totals, details = [], [], []
     passed = failed = 0
     for key in runs:
@@ -94,7 +100,7 @@ def main():
             passed += ok
             failed += not ok
         totals.append(
-            "| %s | %d | %d%s | %s | %s | %s | %s | %s |"
+            "| %s | %d | %d%s | %s | %s | %s | %s | %s | %s |"
             % (
                 name,
                 p,
@@ -105,6 +111,7 @@ def main():
                 fmt(pp["total"]),
                 pct((pp["total"] - total) / total),
                 "-" if over else ("yes" if ok else "no"),
+                "%.0f %%" % (100 * statistics.median(shares[key])) if key in shares else "",
             )
         )
         details.append(
@@ -142,12 +149,16 @@ shared-memory transport copied large messages by {single_copy_text(cond.get('sin
    median of its runs, the spread (max - min) / median. Blazek's node-initiated method runs its host
    computer as one more process. **Points with more processes than cores are oversubscribed**:
    ranks share cores, so they are pessimistic and noisy; the prediction assumes a core each.
+   The core share is the median over the runs of the lowest rank's CPU time over its wall-clock
+   time (`core_share.csv`): a waiting rank polls, yielding its core only to another program that
+   wants it, so below 100 % other programs ran on a rank's core during the run (at oversubscribed
+   points the ranks themselves).
 4. Targets: the total within {TOTAL_TOL:.0%}, every phase above {PHASE_SHARE:.0%} of the run (bold
    share) within {PHASE_TOL:.0%}, at every point that is not oversubscribed: **{passed} met,
    {failed} not**.
 
-| workload | P | processes | measured median (s) | spread | predicted (s) | error | targets met |
-|---|---|---|---|---|---|---|---|
+| workload | P | processes | measured median (s) | spread | predicted (s) | error | targets met | core share |
+|---|---|---|---|---|---|---|---|---|
 """
         )
         f.write("\n".join(totals) + "\n\n## Phase by phase\n\n" + "\n".join(details))

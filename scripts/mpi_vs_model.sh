@@ -75,9 +75,14 @@ done
 
 # 3. Measured runs (P + 1 processes for a method with a host computer). A rank waiting for a message
 # yields its core (OpenMPI's mpi_yield_when_idle) instead of spinning on it: with more processes
-# than cores, a spinning rank takes the core its partner needs to send that message.
+# than cores, a spinning rank takes the core its partner needs to send that message. (Spinning at
+# P = 2 was tried: at load 10-11, three paired elastic runs took 4.5-5.5 s spinning against
+# 3.9-5.1 s yielding.) With nothing else to run, a yielding rank gets its core straight back.
+# Each run's core share (host.core_share: the lowest rank's CPU time over its wall-clock time;
+# below 1, other programs ran on a rank's core) goes to core_share.csv.
 export OMPI_MCA_mpi_yield_when_idle=1
 echo "workload,nodes,processes,run,phase,seconds" >"$out/measured.csv"
+echo "workload,nodes,processes,run,core_share" >"$out/core_share.csv"
 for w in "${workloads[@]}"; do
   IFS='|' read -r name host args <<<"$w"
   for p in "${nodes[@]}"; do
@@ -85,13 +90,16 @@ for w in "${workloads[@]}"; do
     for i in $(seq 1 "$runs"); do
       # shellcheck disable=SC2086
       mpirun -np $np "$zcube" run --backend mpi $args --report "$tmp/m.json" >/dev/null
-      python3 - "$tmp/m.json" "$name" "$p" "$np" "$i" >>"$out/measured.csv" <<'PY'
+      python3 - "$tmp/m.json" "$name" "$p" "$np" "$i" "$out" <<'PY'
 import json, sys
-r, name, p, np, i = sys.argv[1:]
+r, name, p, np, i, out = sys.argv[1:]
 j = json.load(open(r))
-for ph in j["phases"]:
-    print(f"{name},{p},{np},{i},{ph['name']},{ph['max_s']!r}")
-print(f"{name},{p},{np},{i},total,{j['virtual_time_s']!r}")
+with open(out + "/measured.csv", "a") as f:
+    for ph in j["phases"]:
+        print(f"{name},{p},{np},{i},{ph['name']},{ph['max_s']!r}", file=f)
+    print(f"{name},{p},{np},{i},total,{j['virtual_time_s']!r}", file=f)
+with open(out + "/core_share.csv", "a") as f:
+    print(f"{name},{p},{np},{i},{j['host']['core_share']!r}", file=f)
 PY
     done
   done

@@ -31,6 +31,14 @@ long minor_faults() {
   return u.ru_minflt;
 }
 
+// This process's CPU time so far (user and system).
+double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+         1e-6 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
 // A delivered picture (or rows) as bytes, and back.
 Bytes pack_images(const std::vector<FrameImage>& images) {
   Bytes b;
@@ -115,6 +123,7 @@ SimResult run_mpi(const SimConfig& cfg) {
   MPI_Barrier(MPI_COMM_WORLD);
   comm.reset_clock();
   const long faults0 = minor_faults();
+  const double cpu0 = cpu_seconds(), wall0_s = MPI_Wtime();
   try {
     if (rank < P)
       algo.node(ctx);
@@ -126,6 +135,11 @@ SimResult run_mpi(const SimConfig& cfg) {
   comm.flush();
   stats.finish_s = comm.now();
   const long faults = minor_faults() - faults0;
+  // The share of the run a rank had a core: its CPU time over its wall-clock time. A rank that
+  // waits polls (with OpenMPI's mpi_yield_when_idle it yields its core only to another program
+  // that wants it), so below 1 other programs ran on its core; the lowest rank's.
+  const double wall_s = MPI_Wtime() - wall0_s;
+  const double core_share = -max_over_ranks(-(wall_s > 0 ? (cpu_seconds() - cpu0) / wall_s : 1.0));
   const double total = max_over_ranks(stats.finish_s);
 
   const nlohmann::json mine = {
@@ -164,7 +178,8 @@ SimResult run_mpi(const SimConfig& cfg) {
   j["host"] = {{"wall_time_s",
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count()},
                {"peak_rss_bytes", peak_rss_bytes()},
-               {"page_faults_timed", faults}}; // node 0's, between the barrier and its finish
+               {"page_faults_timed", faults}, // node 0's, between the barrier and its finish
+               {"core_share", core_share}};
   return res;
 }
 

@@ -160,8 +160,8 @@ validate)
   # (results/mpi/README.md); here a one-node prediction must only be within a factor of 3.
   QUICK=1 ZCUBE_MPI_CLOCK=cpu "$src/scripts/mpi_vs_model.sh" "$zcube" "$tmp/v" >"$tmp/out" 2>&1 ||
     bad "mpi_vs_model.sh: $(tail -3 "$tmp/out")"
-  for f in probe.json cluster-1.xml cluster-2.xml cluster-4.xml measured.csv comparison.csv README.md \
-    predicted/pair-rs-1.json predicted/node-initiated-2.json; do
+  for f in probe.json cluster-1.xml cluster-2.xml cluster-4.xml measured.csv core_share.csv \
+    comparison.csv README.md predicted/pair-rs-1.json predicted/node-initiated-2.json; do
     [ -s "$tmp/v/$f" ] || bad "mpi_vs_model.sh wrote no $f"
   done
   if [ "$fail" = 0 ]; then
@@ -176,6 +176,14 @@ for r in rows:
     assert m > 0 and p > 0, r
     if r["nodes"] == "1":
         assert 1 / 3 < p / m < 3, f"{r['workload']} P=1: predicted {p} s, measured {m} s"
+# Every run's core share (CPU time over wall-clock time of its lowest rank), in the table.
+shares = list(csv.DictReader(open(sys.argv[1].replace("comparison.csv", "core_share.csv"))))
+assert {(r["workload"], r["nodes"]) for r in shares} == want, "core shares: " + str(shares)
+assert all(0 < float(r["core_share"]) < 4 for r in shares), shares
+readme = open(sys.argv[1].replace("comparison.csv", "README.md")).read()
+import re
+assert "| targets met | core share |" in readme, "no core share column"
+assert len(re.findall(r"\| (yes|no|-) \| [0-9]+ % \|$", readme, re.M)) == 12, "core shares missing"
 PY
   fi
   [ "$fail" = 0 ] && echo "ok   mpi_vs_model.sh: probe, predictions, 12 measured points, comparison"
