@@ -220,8 +220,7 @@ int reproduce(const ReproduceOptions& o) {
     std::cerr << "reproduce: " << cfgs.size() << " simulations, " << o.jobs << " at a time\n";
   const auto progress = o.verbose && o.write ? progress_printer("reproduce", cfgs.size())
                                              : std::function<void(const BatchProgress&)>{};
-  const auto reps =
-      o.runner ? o.runner(cfgs, o.jobs, progress) : simulate_batch(cfgs, o.jobs, progress);
+  auto reps = o.runner ? o.runner(cfgs, o.jobs, progress) : simulate_batch(cfgs, o.jobs, progress);
   if (!o.write) return 0;
 
   int status = 0;
@@ -260,6 +259,11 @@ int reproduce(const ReproduceOptions& o) {
                             ("zcube-" + std::to_string(getpid()) + "-plots"));
   std::optional<BackgroundPlots> plots;
   if (o.plots) plots.emplace(o.root, plot_arguments(charts, o, plot_dir));
+  // The reports are written: freed before the calibration forks its runs (a fork copies the page
+  // tables of the memory its parent holds).
+  const std::size_t chart_count = charts.size();
+  charts.clear();
+  std::vector<nlohmann::json>().swap(reps);
   if (all && o.calibration) {
     CalibrationOptions c;
     c.root = o.root;
@@ -284,7 +288,7 @@ int reproduce(const ReproduceOptions& o) {
 
   if (plots) {
     if (o.verbose)
-      std::cerr << "reproduce: drawing the plots and " << charts.size() << " space-time diagrams\n";
+      std::cerr << "reproduce: drawing the plots and " << chart_count << " space-time diagrams\n";
     plots->go();
     if (!plots->wait())
       std::cerr << "reproduce: plots not drawn (scripts/plot_results.py failed; it needs "

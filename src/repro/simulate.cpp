@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <map>
 #include <memory>
+#include <set>
 #include <thread>
 #include <tuple>
 
@@ -105,6 +106,9 @@ void prepare_references(const std::vector<SimConfig>& points, int jobs) {
     if (const Scene* s = compares_image(p) ? cached_scene(p) : nullptr)
       for (int f = 0; f < p.options.frames; ++f)
         ++uses[{s, f, p.options.frames}];
+  // The references no point of this batch compares with are dropped before it forks (as the
+  // scenes are, drop_unused_scenes).
+  std::erase_if(refs, [&uses](const auto& r) { return !uses.contains(r.first); });
   std::vector<ReferenceKey> todo;
   for (const auto& [k, n] : uses)
     if (n >= 2 && !refs.contains(k)) todo.push_back(k);
@@ -127,6 +131,26 @@ void prepare_references(const std::vector<SimConfig>& points, int jobs) {
     const auto it = r.find({&scene, frame, frames});
     return it == r.end() ? nullptr : &it->second;
   });
+}
+
+// The cached scenes no point of `points` uses, and the references drawn from them, dropped before
+// the batch forks: each fork copies the page tables of all the memory the parent holds (the
+// calibration's runs, on Kurc's pots alone, would otherwise each copy those of Blazek's spheres).
+void drop_unused_scenes(const std::vector<SimConfig>& points) {
+  std::set<SceneKey> used;
+  for (const auto& p : points)
+    used.insert(scene_key(p));
+  auto& cache = scene_cache();
+  auto& refs = reference_cache();
+  for (auto it = cache.begin(); it != cache.end();) {
+    if (used.contains(it->first)) {
+      ++it;
+      continue;
+    }
+    const Scene* gone = it->second.get();
+    std::erase_if(refs, [gone](const auto& r) { return std::get<0>(r.first) == gone; });
+    it = cache.erase(it);
+  }
 }
 
 // A point's host work, roughly: every node touches the picture and the triangles (a 1024-node
@@ -194,6 +218,7 @@ nlohmann::json simulate_point(const SimConfig& cfg) {
 std::vector<nlohmann::json>
 simulate_batch(const std::vector<SimConfig>& points, int jobs,
                const std::function<void(const BatchProgress&)>& progress) {
+  drop_unused_scenes(points);
   preload_scenes(points, jobs);
   prepare_references(points, jobs);
   const std::vector<std::size_t> order = longest_first(points);
