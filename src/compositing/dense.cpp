@@ -97,6 +97,8 @@ private:
       m.charged += std::size_t(y1 - y0) * W * rec_.location;
     }
     m.payload = std::move(rows);
+    // One band is sent in place by the modelled program; zcube copies it into its message.
+    if (band.size() == 1) n.work.wire_bytes += m.payload.size();
     if (band.size() > 1) {
       n.work.bytes_packed += m.charged;
       n.memory.alloc(double(m.charged), "send buffer");

@@ -39,6 +39,7 @@ public:
       std::replace(others.begin(), others.end(), r.self, -1);
     }
     auto parts = serialize_sparse_by_owner(mine_, how == Merge::Lists ? others : r.dest, r.parts);
+    n.work.wire_records += routed_pixels(r); // converted to wire records, or the kept copied out
     const std::vector<int> runs = runs_per_destination(r.dest, r.parts);
     std::vector<Message> out;
     gathered_ = 0;
@@ -63,6 +64,15 @@ public:
   ActivePixels final_pixels(Counters&) override { return std::move(mine_); }
 
 private:
+  // The pixels of the rows the routing sends somewhere (kept rows included).
+  std::uint64_t routed_pixels(const Routing& r) const {
+    std::uint64_t n = 0;
+    for (int y = mine_.y0; y < mine_.y1; ++y)
+      if (const int d = r.dest[std::size_t(y - mine_.y0)]; d >= 0 && d < r.parts)
+        n += mine_.row_count(y);
+    return n;
+  }
+
   // §3.2: "Each processor holds a local z-buffer of size N x N/P" (its owned scanlines).
   void hold_owned_zbuffer(const Routing& r, Node& n) {
     n.memory.release(zbuffer_); // a previous round's, already merged into the pixels held
@@ -91,6 +101,7 @@ private:
       const Bytes& b = m.payload;
       std::uint64_t got = 0;
       mine_ = merge_active_sparse(keep_, b.data(), b.size(), n.work, got);
+      n.work.wire_records += got; // each converted back from its wire record as it is merged
       load += got;
       n.memory.alloc(enc_.held(mine_, rec_), "merged pixels");
       n.memory.release(held_ + gathered_ + received);
@@ -120,6 +131,7 @@ private:
     for (std::size_t i = 1; i < counts.size(); ++i)
       received_pixels += counts[i];
     n.work.merge_ops += counts[0] + received_pixels;
+    n.work.wire_records += counts[0] + received_pixels; // each converted back from the wire
     n.memory.release(received);
     return received_pixels;
   }

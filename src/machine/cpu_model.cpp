@@ -37,11 +37,16 @@ CpuModel parse_cpu(const char* text) {
   for (const auto& [k, v] : j.at("cycles").items())
     m.classes[k] = {v.at("cycles").get<double>(), v.at("why").get<std::string>(),
                     v.at("source").get<std::string>()};
-  std::map<std::string, double> per_field;
+  std::map<std::string, const OperationMix*> per_field;
   for (const auto& op : operation_mixes())
-    per_field[op.field] = mix_cycles(op.mix, m);
-  for (auto& [id, v] : m.cycles.fields())
-    *v = per_field.at(id.substr(5)); // "cost_<field>"
+    per_field[op.field] = &op;
+  auto zcube = m.zcube_cycles.fields();
+  auto cycles = m.cycles.fields();
+  for (std::size_t i = 0; i < cycles.size(); ++i) {
+    const OperationMix& op = *per_field.at(cycles[i].first.substr(5)); // "cost_<field>"
+    *zcube[i].second = mix_cycles(op.mix, m);
+    *cycles[i].second = op.zcube_only ? 0 : *zcube[i].second;
+  }
   return m;
 }
 
@@ -55,7 +60,7 @@ const std::vector<OperationMix>& operation_mixes() {
     for (auto& [id, ignored] : order.fields()) {
       const std::string f = id.substr(5);
       const auto& o = ops.at(f);
-      OperationMix m{f, o.at("does").get<std::string>(), {}};
+      OperationMix m{f, o.at("does").get<std::string>(), {}, o.value("zcube_only", false)};
       for (const auto& [cls, n] : o.at("mix").items())
         m.mix[cls] = n.get<double>();
       out.push_back(m);
@@ -83,6 +88,10 @@ const CpuModel& cpu_model(const std::string& name) {
   if (name == "i80386") return i386;
   if (name == "i860xr") return i860;
   throw UsageError("unknown CPU '" + name + "': expected i80386 or i860xr");
+}
+
+CostTable zcube_loop_seconds(const CpuModel& cpu) {
+  return cpu.zcube_cycles.scaled(1.0 / cpu.clock_hz);
 }
 
 CostTable cpu_seconds(const CpuModel& cpu, const std::vector<double>& scale) {

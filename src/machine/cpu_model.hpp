@@ -24,13 +24,17 @@ struct CpuModel {
   double clock_hz = 0;
   std::map<std::string, InstructionClass> classes;
   std::map<std::string, std::string> sources; // key -> full reference
-  CostTable cycles;                           // clocks per counted operation (physical estimate)
+  CostTable cycles; // clocks per counted operation of the modelled programs (physical estimate)
+  CostTable zcube_cycles; // clocks of zcube's own loop for every operation, zcube-only ones too
 };
 
 struct OperationMix {
   std::string field; // Counters field
   std::string does;  // what the operation executes
   std::map<std::string, double> mix;
+  // zcube's own work for its messages, which the papers' programs do not do: the CPU's table
+  // prices it 0 (CpuModel::cycles), its mix is the probe's reference (zcube_loop_seconds).
+  bool zcube_only = false;
 };
 
 // The operation mixes, in Counters field order.
@@ -42,6 +46,10 @@ double plausible_high();
 const std::vector<std::string>& cpu_names();
 // The model of a CPU (UsageError for an unknown name).
 const CpuModel& cpu_model(const std::string& name);
+
+// Seconds per operation of zcube's own loops at the CPU's clock (zcube-only operations included):
+// the reference the probe scales to this machine's costs.
+CostTable zcube_loop_seconds(const CpuModel& cpu);
 
 // Seconds per operation at the CPU's clock, each cost group scaled by scale[g] (cost_groups()
 // order; an empty vector means the physical estimate).

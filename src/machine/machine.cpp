@@ -48,7 +48,8 @@ const std::vector<CostGroup>& cost_groups() {
        {"pixels_generated", "pixels_tested", "pixels_written", "pixels_final", "texels_fetched"}},
       {"clear", {"pixels_cleared"}},
       {"merge", {"merge_ops"}},
-      {"packing", {"bytes_packed", "records_packed", "locations_scanned"}},
+      {"packing",
+       {"bytes_packed", "records_packed", "locations_scanned", "wire_records", "wire_bytes"}},
       {"list_merge", {"list_merges"}},
       {"scanline", {"wpa_tested", "wpa_appended"}}};
   return g;

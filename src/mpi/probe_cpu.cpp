@@ -13,6 +13,7 @@
 #include "compositing/dense.hpp"
 #include "compositing/gather.hpp"
 #include "compositing/winning_pixels.hpp"
+#include "machine/cpu_model.hpp"
 #include "raster/active_pixels.hpp"
 #include "raster/renderer.hpp"
 #include "raster/zbuffer.hpp"
@@ -70,6 +71,7 @@ enum Group : std::size_t {
   kSort,
   kScanline,
   kScan,
+  kWire,
   kGroups
 };
 
@@ -80,7 +82,7 @@ const std::vector<CostGroup>& probe_groups() {
       {"estimate", {"triangles_estimated", "rows_scanned"}},
       {"tessellate", {"triangles_tessellated"}},
       {"clear", {"pixels_cleared"}},
-      {"packing", {"bytes_packed"}},
+      {"packing", {"bytes_packed", "wire_bytes"}},
       {"merge", {"merge_ops"}},
       {"list_merge", {"list_merges"}},
       {"records", {"records_packed"}},
@@ -90,7 +92,8 @@ const std::vector<CostGroup>& probe_groups() {
        {"pixels_generated", "pixels_tested", "pixels_written", "pixels_final", "texels_fetched"}},
       {"sort", {"sort_steps"}},
       {"scanline", {"wpa_tested", "wpa_appended"}},
-      {"scan", {"locations_scanned"}}};
+      {"scan", {"locations_scanned"}},
+      {"wire", {"wire_records"}}};
   return g;
 }
 
@@ -104,6 +107,7 @@ enum BlockId : std::size_t {
   kPackingLoops,
   kMergeLoops,
   kListMergeLoops,
+  kWireLoops,
   kOutputLoops,
   kDenseOutputLoops,
   kZbufferLoops,
@@ -126,6 +130,7 @@ const std::vector<Block>& blocks() {
       {"location packing", {kPacking}},
       {"location merge", {kMerge}},
       {"active merge", {kListMerge}},
+      {"wire records", {kWire}},
       {"sparse output", {kRecords}},
       {"dense output", {kScan}},
       // The frame-buffer z-buffer: a triangle's edges, its spans (found and started), its
@@ -288,6 +293,19 @@ void render_loops(Probe& p, const Picture& pic, bool kurc) {
          [&](Counters& c) { (void)zbuffer_spans(lists, all, nr.shade(), size, c); });
   if (kurc) {
     p.time(kListMergeLoops, pic.name, [&](Counters& c) { (void)merge_active(odd, even, c); });
+    // A pair's exchange as zcube makes it (compositing/winning_pixels.cpp): the rows sent (odd)
+    // converted to wire records, the rows kept (even) copied out, the received rows merged into
+    // them from the wire.
+    std::vector<int> to_odd(static_cast<std::size_t>(size), -1);
+    for (int y = 1; y < size; y += 2)
+      to_odd[std::size_t(y)] = 1;
+    p.time(kWireLoops, pic.name, [&](Counters& c) {
+      const auto parts = serialize_sparse_by_owner(wpa, to_odd, 2);
+      const ActivePixels keep = select_rows(wpa, [](int y) { return y % 2 == 0; });
+      std::uint64_t got = 0;
+      (void)merge_active_sparse(keep, parts[1].data(), parts[1].size(), c, got);
+      c.wire_records += wpa.count() + got;
+    });
     // Kurc et al.'s output (compositing/gather.hpp): the final pixels packed into a message, which
     // node 0 unpacks and pastes into the picture.
     p.time(kOutputLoops, pic.name, [&](Counters& c) {
@@ -370,7 +388,7 @@ void buffer_loops(Probe& p, int size, bool merges) {
 // block's own groups (non-negative least squares on relative errors). Returns one multiplier a
 // group on the prior table and writes every loop's fitted prediction into `log`.
 std::vector<double> solve(const std::vector<Loop>& loops, nlohmann::json& log) {
-  const CostTable prior = prior_i386_costs();
+  const CostTable prior = zcube_loop_seconds(cpu_model("i80386"));
   std::vector<double> k(kGroups, 0.0);
   std::vector<bool> known(kGroups, false);
   std::vector<std::vector<double>> A;
@@ -456,7 +474,7 @@ CostTable measure_cpu(const std::string& root, double min_seconds, nlohmann::jso
   std::stable_sort(p.loops.begin(), p.loops.end(),
                    [](const Loop& a, const Loop& b) { return a.block < b.block; });
   const std::vector<double> k = solve(p.loops, log);
-  return scale_groups(prior_i386_costs(), probe_groups(), k);
+  return scale_groups(zcube_loop_seconds(cpu_model("i80386")), probe_groups(), k);
 }
 
 } // namespace zc

@@ -39,6 +39,10 @@ struct Counters {
   std::uint64_t sort_steps = 0;        // comparison-sort steps: n ceil(log2 n) for a list of n
   std::uint64_t records_packed = 0;    // records gathered into / scattered out of messages
   std::uint64_t locations_scanned = 0; // z-buffer locations read for their coverage, in a scan
+  // zcube's own work for its messages, which the papers' programs (their arrays sent in place) do
+  // not do: 0 on the iPSC machines, probed on this one (docs/machines.md, "zcube's own loops"):
+  std::uint64_t wire_records = 0; // pixels converted to or from zcube's wire records for a merge
+  std::uint64_t wire_bytes = 0;   // bytes copied into a message the modelled program sends in place
 
   Counters& operator+=(const Counters& o);
   friend Counters operator+(Counters a, const Counters& b) { return a += b; }
@@ -85,6 +89,8 @@ void from_json(const nlohmann::json& j, Counters& c); // absent fields are 0
   X(span_starts)                                                                                   \
   X(sort_steps)                                                                                    \
   X(records_packed)                                                                                \
-  X(locations_scanned)
+  X(locations_scanned)                                                                             \
+  X(wire_records)                                                                                  \
+  X(wire_bytes)
 
 } // namespace zc

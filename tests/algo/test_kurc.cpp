@@ -4,6 +4,7 @@
 #include <map>
 
 #include "algo/kurc_pixel_merging.hpp"
+#include "raster/framebuffer.hpp"
 #include "sim_fixtures.hpp"
 #include "util/counters.hpp"
 
@@ -150,4 +151,18 @@ TEST(Kurc, EachSchemeCountsTheLoopsItRuns) {
   EXPECT_EQ(pm.merge_ops, 0u);
   EXPECT_GT(am.merge_ops, 0u);
   EXPECT_EQ(am.list_merges, 0u);
+  // zcube's own wire work (0 on the iPSC machines): ZBUF-EXC copies each band it sends (one run
+  // of 11-byte locations) into its message; a pair converts every pixel it holds at a stage (sent
+  // as wire records, kept copied out) and every pixel it receives, so that beyond its list merges
+  // (kept and received) it converts each pixel received once more; AAPC converts every pixel to
+  // the wire and back.
+  EXPECT_EQ(zm.wire_bytes, zm.merge_ops * Framebuffer::kLocationBytes);
+  EXPECT_EQ(zm.wire_records, 0u);
+  std::uint64_t received = 0;
+  for (auto l : r["pair-rs"]["kurc"]["merge_loads"])
+    received += l.get<std::uint64_t>();
+  EXPECT_GT(received, 0u);
+  EXPECT_EQ(pm.wire_records, pm.list_merges + received);
+  EXPECT_EQ(am.wire_records, 2 * am.merge_ops);
+  EXPECT_EQ(pm.wire_bytes + am.wire_bytes, 0u);
 }
