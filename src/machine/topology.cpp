@@ -30,7 +30,13 @@ int log2_exact(int p) {
 
 std::vector<std::pair<int, int>> route(Topology t, int nodes, int src, int dst) {
   std::vector<std::pair<int, int>> r;
-  r.reserve(std::size_t(hops(t, nodes, src, dst))); // one allocation: a route is built per message
+  r.reserve(std::size_t(hops(t, nodes, src, dst))); // one allocation
+  route_into(t, nodes, src, dst, r);
+  return r;
+}
+
+void route_into(Topology t, int nodes, int src, int dst, std::vector<std::pair<int, int>>& r) {
+  r.clear();
   if (t == Topology::Cube) {
     int at = src;
     for (unsigned diff = unsigned(src ^ dst); diff; diff &= diff - 1) {
@@ -38,7 +44,7 @@ std::vector<std::pair<int, int>> route(Topology t, int nodes, int src, int dst) 
       r.emplace_back(at, next);
       at = next;
     }
-    return r;
+    return;
   }
   const int fwd = ((dst - src) % nodes + nodes) % nodes;
   const int step = (fwd <= nodes - fwd) ? 1 : -1;
@@ -47,7 +53,6 @@ std::vector<std::pair<int, int>> route(Topology t, int nodes, int src, int dst) 
     r.emplace_back(at, next);
     at = next;
   }
-  return r;
 }
 
 int hops(Topology t, int nodes, int src, int dst) {

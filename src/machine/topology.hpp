@@ -19,6 +19,8 @@ void check_node_count(Topology t, int nodes);
 
 // The directed channels (from, to) a message from src to dst traverses, in order.
 std::vector<std::pair<int, int>> route(Topology t, int nodes, int src, int dst);
+// The same route written over `out`, whose capacity is kept (the simulator builds one a message).
+void route_into(Topology t, int nodes, int src, int dst, std::vector<std::pair<int, int>>& out);
 int hops(Topology t, int nodes, int src, int dst);
 
 // Neighbours of a node: cube channel k -> i ^ 2^k; ring 0 -> i+1, 1 -> i-1.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <limits>
 
+#include <xbt/config.hpp>
+
 namespace zc {
 
 namespace sg = simgrid::s4u;
@@ -12,62 +14,44 @@ constexpr double kNever = -std::numeric_limits<double>::infinity();
 }
 
 Delivery::Delivery(SimNetwork& net, Fidelity fidelity, std::vector<sg::Host*> hosts)
-    : net_(net), fidelity_(fidelity), hosts_(std::move(hosts)), ranks_(net.nodes() + 1),
-      inboxes_(std::size_t(ranks_), Inbox(ranks_)), waiters_(ranks_ + 1),
+    : net_(net), fidelity_(fidelity),
+      wakeups_(simgrid::config::get_value<double>("surf/precision")), hosts_(std::move(hosts)),
+      ranks_(net.nodes() + 1), inboxes_(std::size_t(ranks_), Inbox(ranks_)), waiters_(ranks_ + 1),
       events_driven_(fidelity == Fidelity::Circuit ||
                      (fidelity == Fidelity::Analytic && net.params().half_duplex_limited())),
       duplex_(net.params()) {
-  for (auto& w : waiters_)
-    w.wakeup = sg::Semaphore::create(0);
+  for (int i = 0; i <= ranks_; ++i)
+    waiters_[std::size_t(i)].sleeper.order = i; // ranks, then the network's actor
   if (events_driven_)
     sg::Actor::create("network", hosts_.back(), [this] { network_loop(); })->daemonize();
 }
 
-// A rank blocks on its own semaphore: a wake-up given between the decision to block and the
-// block itself is kept, not lost (the semaphore counts it). SimGrid wakes a timed wait at
-// now + (deadline - now), which may differ from the deadline in the last bit: the caller treats
-// the deadline itself as reached, so that no wait is ever repeated.
+// A rank blocks until its wake-up: its deadline, or an earlier one that a message moved it to
+// (notify). Nobody else can run between the decision to block and the block itself (actors take
+// turns on one thread, and a rank yields only in Wakeups::wait).
 double Delivery::block(Waiter& w, double deadline, double& now) {
   w.blocked = true;
   w.deadline = deadline;
-  bool reached = false;
-  if (deadline == kNotYet)
-    w.wakeup->acquire();
-  else
-    reached = w.wakeup->acquire_timeout(std::max(0.0, deadline - now));
+  if (deadline != kNotYet) wakeups_.set_until(w.sleeper, deadline);
+  const double reached = wakeups_.wait(w.sleeper);
   w.blocked = false;
-  now = sg::Engine::get_clock();
-  return reached ? deadline : kNever;
+  now = wakeups_.now();
+  return reached;
 }
 
 void Delivery::notify(Waiter& w, const Transit& m) {
   if (!w.blocked || !(m.arrival < w.deadline)) return;
   const bool wanted =
       w.send == &m || (w.receiving && w.tag == m.tag && (w.src == kAnySource || w.src == m.src));
-  if (wanted) wake(w);
+  if (wanted) wake(w, m.arrival);
 }
 
-// Releasing a semaphore yields to SimGrid, and other actors then run: wake-ups are given only once
-// zcube's state is consistent again (flush_wakeups at the end of each operation).
-void Delivery::wake(Waiter& w) {
-  w.blocked = false; // one wake-up is enough
-  to_wake_.push_back(w.wakeup.get());
-}
-
-void Delivery::flush_wakeups() {
-  if (to_wake_.empty()) return;
-  // Releasing yields: another actor may flush its own wake-ups meanwhile, into to_wake_. The
-  // list being released is set apart, in a vector of the spares (their buffers kept).
-  std::vector<sg::Semaphore*> now;
-  if (!spare_lists_.empty()) {
-    now.swap(spare_lists_.back());
-    spare_lists_.pop_back();
-  }
-  now.swap(to_wake_);
-  for (sg::Semaphore* s : now)
-    s->release();
-  now.clear();
-  spare_lists_.push_back(std::move(now));
+// The waiter wakes when the message it wants has arrived, at the date a wait set now for that
+// arrival would end at (as when it was woken now and then slept until the arrival). It stays
+// blocked: a message arriving earlier still moves its wake-up.
+void Delivery::wake(Waiter& w, double t) {
+  w.deadline = t;
+  wakeups_.set_until(w.sleeper, t);
 }
 
 void Delivery::arrived(Transit& m) {
@@ -84,7 +68,7 @@ TransitPtr Delivery::post(int src, int dst, int tag, Message msg, Blocks blocks,
   m->blocks = std::move(blocks);
   m->bundle = bundle;
   m->charged = msg.charged;
-  m->sent_at = sg::Engine::get_clock();
+  m->sent_at = wakeups_.now();
   const double bytes = double(m->charged);
   if (fidelity_ == Fidelity::Analytic && !events_driven_) {
     double t = m->sent_at;
@@ -103,25 +87,30 @@ TransitPtr Delivery::post(int src, int dst, int tag, Message msg, Blocks blocks,
     inboxes_[dst].push(m);
     sg::Actor::create("msg", hosts_[src], [this, m, bytes] {
       net_.transfer(m->src, m->dst, bytes);
-      m->arrival = sg::Engine::get_clock();
+      m->arrival = wakeups_.now();
       arrived(*m);
-      flush_wakeups();
     });
   }
-  flush_wakeups();
   return m;
 }
 
-// A known arrival that nothing can bring forward is waited for by sleeping until it: cheaper than
-// a timed wait on the semaphore, and nobody needs to wake this rank (it is not marked blocked).
-// As with block(), the deadline itself counts as reached.
-double Delivery::sleep_until(double deadline, double& now) {
-  const double d = deadline - now;
-  if (d > 0) {
-    sg::this_actor::sleep_for(d);
-    now = sg::Engine::get_clock();
+// A known arrival that nothing can bring forward is waited for without being marked blocked
+// (nobody needs to move this rank's wake-up). As with block(), the deadline itself counts as
+// reached.
+double Delivery::sleep_until(Waiter& w, double deadline, double& now) {
+  if (deadline - now > 0) {
+    wakeups_.set_until(w.sleeper, deadline);
+    wakeups_.wait(w.sleeper);
+    now = wakeups_.now();
   }
   return deadline;
+}
+
+void Delivery::compute(int self, double seconds) {
+  if (!(seconds > 0)) return;
+  Waiter& w = waiters_[self];
+  wakeups_.set_after(w.sleeper, seconds, 0);
+  wakeups_.wait(w.sleeper);
 }
 
 void Delivery::await_arrival(int self, const Transit& m, double& now) {
@@ -129,7 +118,7 @@ void Delivery::await_arrival(int self, const Transit& m, double& now) {
   double reached = kNever;
   while (!(m.arrival <= std::max(now, reached))) {
     if (m.arrival != kNotYet) { // set once: only contention (circuit, flow) leaves it open
-      reached = sleep_until(m.arrival, now);
+      reached = sleep_until(w, m.arrival, now);
       continue;
     }
     w.send = &m;
@@ -148,7 +137,7 @@ TransitPtr Delivery::receive(int self, int src, int tag, double& now) {
     // overtakes it): once its arrival is known, sleep until it. From any source, another message
     // may still arrive first.
     if (src != kAnySource && wake != kNotYet) {
-      reached = sleep_until(wake, now);
+      reached = sleep_until(w, wake, now);
       continue;
     }
     w.receiving = true;
@@ -164,7 +153,7 @@ TransitPtr Delivery::receive(int self, int src, int tag, double& now) {
 
 void Delivery::schedule(Event e) {
   Waiter& net = waiters_.back();
-  if (net.blocked && e.time < net.deadline) wake(net);
+  if (net.blocked && e.time < net.deadline) wake(net, e.time);
   events_.push(std::move(e));
 }
 
@@ -307,7 +296,7 @@ void Delivery::process(const Event& e) {
 
 void Delivery::network_loop() {
   Waiter& self = waiters_.back();
-  double reached = kNever, now = sg::Engine::get_clock();
+  double reached = kNever, now = wakeups_.now();
   for (;;) {
     // Processing does not yield: the clock stays at `now` until block().
     while (!events_.empty() && events_.top().time <= std::max(now, reached)) {
@@ -315,8 +304,7 @@ void Delivery::network_loop() {
       events_.pop();
       process(e);
     }
-    flush_wakeups();
-    now = sg::Engine::get_clock();
+    now = wakeups_.now();
     reached = block(self, events_.empty() ? kNotYet : events_.top().time, now);
   }
 }

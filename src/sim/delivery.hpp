@@ -1,8 +1,9 @@
 #pragma once
 // How simulated messages travel and are received, without a SimGrid actor per message. Under the
 // analytic and circuit fidelities zcube computes every arrival time itself: a message waits in its
-// destination's Inbox until its arrival, and ranks block on a SimGrid semaphore (with a timeout)
-// until the earliest arrival that concerns them (or until a notification). Circuit contention is
+// destination's Inbox until its arrival, and ranks wait (Wakeups: suspended, no SimGrid activity)
+// until the earliest arrival that concerns them, moved earlier when a message that concerns them is
+// sent meanwhile; computing is such a wait too. Circuit contention is
 // decided by zcube's own channel bookkeeping: the channels of a hold are acquired one by one in the
 // global order, each granted first come, first served, and held for the whole hold
 // (platforms/README.md); a single daemon actor wakes up at the releases that someone waits for. On
@@ -21,6 +22,7 @@
 #include "sim/inbox.hpp"
 #include "sim/sim_network.hpp"
 #include "sim/transit.hpp"
+#include "sim/wakeups.hpp"
 
 namespace zc {
 
@@ -38,11 +40,17 @@ public:
   // Blocks rank `self` until a message from src (or kAnySource) with this tag can be taken. `now`
   // is the virtual time on entry, and on return.
   TransitPtr receive(int self, int src, int tag, double& now);
+  // The virtual time (Wakeups::now).
+  double now() const { return wakeups_.now(); }
+  // Rank `self` computes for `seconds` (as SimGrid's sleep_for would take).
+  void compute(int self, double seconds);
+  // The run is over (its last rank finished, or it failed): no wake-up may move the clock further.
+  void stop() { wakeups_.cancel_all(); }
 
 private:
   // One per rank: where its actor blocks, and what it waits for (to notify only when it matters).
   struct Waiter {
-    simgrid::s4u::SemaphorePtr wakeup;
+    Wakeups::Sleeper sleeper;
     bool blocked = false, receiving = false;
     int src = 0, tag = 0;
     const Transit* send = nullptr;
@@ -70,12 +78,12 @@ private:
     bool operator>(const Event& o) const { return time != o.time ? time > o.time : seq > o.seq; }
   };
 
-  // Both return the deadline if reached (else -inf) and set `now` to the time they return at.
+  // Both return the deadline reached and set `now` to the time they return at.
   double block(Waiter& w, double deadline, double& now);
-  double sleep_until(double deadline, double& now);
+  double sleep_until(Waiter& w, double deadline, double& now);
   void notify(Waiter& w, const Transit& m);
-  void wake(Waiter& w);
-  void flush_wakeups();
+  // A blocked waiter's wake-up moved to `t`, earlier than its deadline.
+  void wake(Waiter& w, double t);
   void arrived(Transit& m);
   // The channel from c.first to c.second, created on first use (a dense index by (from, to)
   // instead of a hash map: every hold looks its channels up).
@@ -92,6 +100,7 @@ private:
 
   SimNetwork& net_;
   Fidelity fidelity_;
+  Wakeups wakeups_;
   std::vector<simgrid::s4u::Host*> hosts_;
   int ranks_;
   std::vector<Inbox> inboxes_;
@@ -100,9 +109,7 @@ private:
   std::vector<Channel> channels_;
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> events_;
   std::uint64_t event_seq_ = 0;
-  std::vector<simgrid::s4u::Semaphore*> to_wake_;                  // waiters_ owns them
-  std::vector<std::vector<simgrid::s4u::Semaphore*>> spare_lists_; // flush_wakeups' (capacity kept)
-  std::vector<TransitPtr> woken_;                                  // scratch of process()
+  std::vector<TransitPtr> woken_; // scratch of process()
   bool events_driven_; // circuit, or any fidelity zcube times on half-duplex-limited links
   DuplexLinks duplex_;
 };

@@ -19,7 +19,7 @@ public:
       : delivery_(d), self_(self), msg_(std::move(m)), stats_(s) {}
   void wait() override {
     if (!msg_) return;
-    const double t0 = sg::Engine::get_clock();
+    const double t0 = delivery_.now();
     double t1 = t0;
     delivery_.await_arrival(self_, *msg_, t1);
     msg_ = nullptr;
@@ -28,7 +28,7 @@ public:
   }
   ~SimSendRequest() override {
     if (!msg_) return;
-    double now = sg::Engine::get_clock();
+    double now = delivery_.now();
     delivery_.await_arrival(self_, *msg_, now); // an unwaited send completes before its handle dies
   }
 
@@ -97,7 +97,7 @@ SendHandle SimComm::isend_blocks(int dst, int tag, Blocks blocks) {
 
 TransitPtr SimComm::take(int src, int tag, int* from) {
   if (src != kAnySource) check_rank(src, "recv");
-  const double t0 = sg::Engine::get_clock();
+  const double t0 = delivery_.now();
   double t1 = t0;
   TransitPtr m = delivery_.receive(rank_, src, tag, t1);
   if (from) *from = m->src;

@@ -32,7 +32,8 @@ public:
     isend_blocks(dst, tag, std::move(blocks))->wait();
   }
   Blocks recv_blocks(int src, int tag, int* from) override;
-  double now() const override { return simgrid::s4u::Engine::get_clock(); }
+  double now() const override { return delivery_.now(); }
+  Delivery& delivery() const { return delivery_; }
 
 private:
   void check_rank(int r, const char* what) const;

@@ -11,13 +11,16 @@ public:
   SimContext(SimComm& comm, NodeStats& stats, const Scene& scene, const SceneFacts& facts,
              const AlgorithmOptions& opt, CostTable cost, double memory_bytes,
              std::vector<FrameImage>& images)
-      : RecordingContext(comm, stats, scene, opt, memory_bytes, images, &facts), cost_(cost) {}
+      : RecordingContext(comm, stats, scene, opt, memory_bytes, images, &facts), cost_(cost),
+        delivery_(comm.delivery()), rank_(comm.rank()) {}
 
 protected:
   void spend(const Counters& work) override;
 
 private:
   CostTable cost_;
+  Delivery& delivery_;
+  int rank_;
 };
 
 } // namespace zc

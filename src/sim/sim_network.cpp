@@ -132,14 +132,15 @@ void SimNetwork::node_holds(int src, int dst, double m, std::vector<Hold>& out,
                             std::size_t& n) const {
   if (src == dst) return;
   if (p_.switching == Switching::StoreAndForward) {
-    for (auto c : route(topo_, nodes_, src, dst)) {
+    route_into(topo_, nodes_, src, dst, route_);
+    for (auto c : route_) {
       slot(out, n).channels.assign(1, c);
       finish_hold(out, n, p_.startup(m), m, true);
     }
     return;
   }
   auto& path = slot(out, n).channels;
-  path = route(topo_, nodes_, src, dst);
+  route_into(topo_, nodes_, src, dst, path);
   const double fixed = p_.startup(m) + (int(path.size()) - 1) * p_.per_hop_s;
   finish_hold(out, n, fixed, m, true);
 }

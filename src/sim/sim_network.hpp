@@ -59,6 +59,7 @@ private:
   Fidelity fid_;
   std::vector<simgrid::s4u::Host*> hosts_; // nodes then srm
   std::map<std::pair<int, int>, simgrid::s4u::MutexPtr> channels_;
+  mutable std::vector<std::pair<int, int>> route_; // node_holds' scratch (capacity kept)
 };
 
 } // namespace zc

@@ -148,17 +148,23 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   std::string failure;
   bool oom = false;
   std::vector<char> finished(P + 1, 0);
+  // Once the last rank is done (or one failed), no pending wake-up may move the clock further:
+  // the run ends at the last rank's end, as SimGrid ends it when only the daemon is left.
+  int running = P + (algo.uses_host ? 1 : 0);
   auto body = [&](int r, const std::function<void(NodeContext&)>& fn) {
     try {
       if (r < P && pm.os_resident > 0) ctxs[r]->alloc(pm.os_resident, "node operating system");
       fn(*ctxs[r]);
       finished[r] = 1;
+      if (--running == 0) delivery.stop();
     } catch (const OutOfNodeMemory& ex) {
       if (failure.empty()) failure = ex.what();
       oom = true;
+      delivery.stop();
       sg::Actor::kill_all();
     } catch (const std::exception& ex) {
       if (failure.empty()) failure = "node " + std::to_string(r) + ": " + ex.what();
+      delivery.stop();
       sg::Actor::kill_all();
     }
     stats[r].finish_s = sg::Engine::get_clock();

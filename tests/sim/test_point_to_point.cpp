@@ -127,3 +127,34 @@ TEST(PointToPoint, SharedChannelSlowsFlowAndCircuitNotAnalytic) {
       EXPECT_GT(run(f, true), alone * 1.5) << fidelity_name(f);
   }
 }
+
+TEST(PointToPoint, RanksDueAtOneVirtualTimeRunInRankOrder) {
+  // 4-node cube, circuit: 0 -> 3 (channels 0-1, 1-3) and 1 -> 3 (channel 1-3) are sent at the same
+  // virtual time, after computing. Rank 1's wake-up is set first (at time 0, rank 0's at the end
+  // of its first part), yet rank 0 runs first at that time: its message has channel (1,3) first
+  // and reaches node 3 first, although it has the longer way.
+  auto r =
+      run_custom(sim_config("ipsc2", 4, Topology::Cube, Fidelity::Circuit), [](NodeContext& ctx) {
+        Comm& c = ctx.comm();
+        Counters w;
+        w.pixels_cleared = 1000;
+        if (c.rank() == 0) {
+          ctx.charge(w);
+          ctx.charge(w);
+          c.send(3, 0, Bytes(1024));
+        }
+        if (c.rank() == 1) {
+          w.pixels_cleared *= 2; // the same date: doubling is exact
+          ctx.charge(w);
+          c.send(3, 0, Bytes(1024));
+        }
+        if (c.rank() == 3) {
+          int first = -1;
+          c.recv(kAnySource, 0, &first);
+          c.recv(kAnySource, 0);
+          ctx.metrics()["first"] = first;
+        }
+      });
+  ASSERT_EQ(r["status"], "ok") << r.dump();
+  EXPECT_EQ(r["per_node"][3]["metrics"]["first"], 0);
+}

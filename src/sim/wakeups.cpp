@@ -1,0 +1,103 @@
+#include "sim/wakeups.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <simgrid/kernel/Timer.hpp>
+#include <simgrid/s4u.hpp>
+
+namespace zc {
+
+namespace sg = simgrid::s4u;
+using simgrid::kernel::timer::Timer;
+
+namespace {
+constexpr double kNoWakeup = std::numeric_limits<double>::quiet_NaN();
+}
+
+namespace {
+// The Wakeups of the simulation this thread runs, whose clock SimGrid's time advances update.
+thread_local Wakeups* clock_owner = nullptr;
+} // namespace
+
+Wakeups::Wakeups(double precision) : precision_(precision), now_(sg::Engine::get_clock()) {
+  static thread_local bool connected = false;
+  if (!connected) {
+    sg::Engine::on_time_advance_cb([](double) {
+      if (clock_owner) clock_owner->now_ = sg::Engine::get_clock();
+    });
+    connected = true;
+  }
+  clock_owner = this;
+}
+
+Wakeups::~Wakeups() {
+  cancel_all();
+  if (clock_owner == this) clock_owner = nullptr;
+}
+
+void Wakeups::set_after(Sleeper& s, double seconds, double reached) {
+  if (stopped_) return;
+  unset(s);
+  const double now = now_;
+  const double date = seconds > 0 ? now + std::max(seconds, precision_) : now;
+  s.date = date;
+  s.reached = reached;
+  auto [it, fresh] = due_.try_emplace(date);
+  if (fresh) it->second.timer = Timer::set(date, [this, date] { fire(date); });
+  it->second.sleepers.push_back(&s); // fire() puts them in order
+}
+
+void Wakeups::set_until(Sleeper& s, double deadline) {
+  set_after(s, deadline - now_, deadline);
+}
+
+void Wakeups::unset(Sleeper& s) {
+  if (std::isnan(s.date)) return;
+  auto it = due_.find(s.date);
+  s.date = kNoWakeup;
+  auto& v = it->second.sleepers;
+  v.erase(std::find(v.begin(), v.end(), &s));
+  if (v.empty()) {
+    it->second.timer->remove();
+    due_.erase(it);
+  }
+}
+
+double Wakeups::wait(Sleeper& s) {
+  s.actor = sg::Actor::self();
+  sg::this_actor::suspend();
+  return s.reached;
+}
+
+// Runs in SimGrid's maestro, once the clock has reached `date` (SimGrid deletes this timer). The
+// parties due within the precision after the clock resume now too, as SimGrid ends together the
+// sleeps it cannot tell apart (their timers are dropped); all of them in their order.
+void Wakeups::fire(double date) {
+  std::vector<Sleeper*>& resumed = resumed_;
+  resumed.clear();
+  for (auto it = due_.begin(); it != due_.end() && it->first - now_ < precision_;) {
+    if (it->first != date) it->second.timer->remove();
+    for (Sleeper* s : it->second.sleepers) {
+      s->date = kNoWakeup;
+      resumed.push_back(s);
+    }
+    it = due_.erase(it);
+  }
+  std::stable_sort(resumed.begin(), resumed.end(),
+                   [](const Sleeper* a, const Sleeper* b) { return a->order < b->order; });
+  for (Sleeper* s : resumed)
+    s->actor->resume();
+}
+
+void Wakeups::cancel_all() {
+  stopped_ = true;
+  for (auto& [date, due] : due_) {
+    due.timer->remove();
+    for (Sleeper* s : due.sleepers)
+      s->date = kNoWakeup;
+  }
+  due_.clear();
+}
+
+} // namespace zc
