@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "algo/elastic_multiscatter.hpp"
 #include "algo/elastic_steps.hpp"
 #include "algo/elastic_vertices.hpp"
 #include "algo/elastic_wire.hpp"
@@ -64,62 +65,39 @@ LocalLoad estimate_load(NodeContext& ctx, const NodeRenderer& nr,
   return load;
 }
 
-// MultiScatter(Triangles): each triangle to every slice it touches (duplicates, Table 1).
-// A message per slice: the bitmask of the local block's triangles it carries, then their records
-// (elastic_wire.hpp); the records are gathered from the block (packing charged), the bitmask is
-// the selection itself.
+// MultiScatter(Triangles): each triangle to every slice it touches (duplicates, Table 1), by the
+// loops of elastic_multiscatter.hpp. The paper's message is its triangles (records.hpp): the bytes
+// charged are their records gathered from the block; the bitmask recovers the global ids of
+// zcube's depth tie-break and is not charged.
 template <class Vertices>
 std::vector<typename Vertices::Record>
 multiscatter_triangles(NodeContext& ctx, const LocalScene& local,
                        const std::vector<RowExtent>& extents, const std::vector<int>& bounds,
                        const Vertices& pv) {
-  using Record = typename Vertices::Record;
   auto ph = ctx.phase("multiscatter_triangles");
   const int P = ctx.nodes();
   const bool with_material = materials_travel(ctx);
   const std::uint32_t material =
       ctx.scene().triangles.empty() ? 0 : ctx.scene().triangles.front().material;
-  const std::size_t tri_bytes = kTriangleWireBytes + (with_material ? 4 : 0);
-  const auto& tris = local.triangles;
-  std::vector<std::vector<std::uint32_t>> picked(P);
-  for (std::size_t i = 0; i < tris.size(); ++i)
-    for_each_slice(bounds, extents[i], [&](int k) { picked[k].push_back(std::uint32_t(i)); });
-  // The paper's message is its triangles (records.hpp); the bitmask recovers the global ids of
-  // zcube's depth tie-break and is not charged.
-  const std::size_t charged_record = tri_bytes + Vertices::kExtraRecordBytes;
+  const std::size_t charged_record =
+      kTriangleWireBytes + (with_material ? 4 : 0) + Vertices::kExtraRecordBytes;
+  Counters gathered; // selected and written field by field
+  SlicePayloads out = pack_slices(local.triangles, extents, bounds, with_material, pv, gathered);
   std::vector<Message> send(P);
-  std::size_t gathered = 0;
+  std::size_t gathered_bytes = 0;
   for (int k = 0; k < P; ++k) {
-    Bytes b = selection_header(tris.size(), picked[k]);
-    for (auto i : picked[k]) {
-      append_triangle(b, tris[i], with_material);
-      pv.append_extra(b, tris[i]);
-    }
-    send[k].payload = std::move(b);
-    send[k].charged = picked[k].size() * charged_record;
-    gathered += send[k].charged;
+    send[k].payload = std::move(out.payloads[k]);
+    send[k].charged = out.triangles[k] * charged_record;
+    gathered_bytes += send[k].charged;
   }
-  ctx.charge_packing(gathered);
-  Counters gathered_records; // selected and written field by field (their bytes: above)
-  for (int k = 0; k < P; ++k)
-    gathered_records.records_packed += picked[k].size();
-  ctx.charge(gathered_records);
+  ctx.charge_packing(gathered_bytes);
+  ctx.charge(gathered);
   std::vector<Bytes> got;
   for (auto& m : coll::alltoallv(ctx.comm(), std::move(send)))
     got.push_back(std::move(m.payload).take());
-  std::vector<Record> slice;
-  for (int s = 0; s < P; ++s) {
-    const BlockRange block = block_range(local.scene_triangles, P, s);
-    RecordReader in(got[s], "multiscatter");
-    for (auto i : read_selection(in, block.size())) {
-      const TriangleRecord t =
-          read_triangle(in, std::uint32_t(block.begin + i), with_material, material);
-      slice.push_back(Vertices::from_wire(t, in.get_bytes(Vertices::kExtraWireBytes)));
-    }
-  }
-  Counters read_records; // each received record read back field by field
-  read_records.records_packed = slice.size();
-  ctx.charge(read_records);
+  Counters read; // each received record read back field by field
+  auto slice = read_slices<Vertices>(got, local.scene_triangles, with_material, material, read);
+  ctx.charge(read);
   ctx.alloc(double(slice.size() * charged_record), "slice triangles");
   return slice;
 }

@@ -45,11 +45,13 @@ const std::vector<CostGroup>& cost_groups() {
         "triangles_setup", "triangles_estimated", "triangles_tessellated"}},
       {"spans", {"spans", "rows_scanned", "edge_walks", "span_starts", "sort_steps"}},
       {"pixels",
-       {"pixels_generated", "pixels_tested", "pixels_written", "pixels_final", "texels_fetched"}},
+       {"pixels_generated", "pixels_tested", "pixels_written", "pixels_final", "texels_fetched",
+        "far_lines"}},
       {"clear", {"pixels_cleared"}},
       {"merge", {"merge_ops"}},
       {"packing",
-       {"bytes_packed", "records_packed", "locations_scanned", "wire_records", "wire_bytes"}},
+       {"bytes_packed", "records_packed", "locations_scanned", "wire_records", "wire_bytes",
+        "triangles_packed"}},
       {"list_merge", {"list_merges"}},
       {"scanline", {"wpa_tested", "wpa_appended"}}};
   return g;

@@ -9,7 +9,9 @@
 #include <functional>
 
 #include "algo/composite.hpp"
+#include "algo/elastic_multiscatter.hpp"
 #include "algo/elastic_partition.hpp"
+#include "algo/elastic_vertices.hpp"
 #include "compositing/dense.hpp"
 #include "compositing/gather.hpp"
 #include "compositing/winning_pixels.hpp"
@@ -18,6 +20,7 @@
 #include "raster/renderer.hpp"
 #include "raster/zbuffer.hpp"
 #include "scene/load.hpp"
+#include "scene/prng.hpp"
 #include "scene/tessellate.hpp"
 #include "util/nnls.hpp"
 
@@ -65,9 +68,11 @@ enum Group : std::size_t {
   kMerge,
   kListMerge,
   kRecords,
+  kTriangleRecords,
   kEdges,
   kSpans,
   kPixels,
+  kFarLines,
   kSort,
   kScanline,
   kScan,
@@ -86,10 +91,12 @@ const std::vector<CostGroup>& probe_groups() {
       {"merge", {"merge_ops"}},
       {"list_merge", {"list_merges"}},
       {"records", {"records_packed"}},
+      {"triangle records", {"triangles_packed"}},
       {"edges", {"edge_walks"}},
       {"spans", {"spans", "span_starts"}},
       {"pixels",
        {"pixels_generated", "pixels_tested", "pixels_written", "pixels_final", "texels_fetched"}},
+      {"far lines", {"far_lines"}},
       {"sort", {"sort_steps"}},
       {"scanline", {"wpa_tested", "wpa_appended"}},
       {"scan", {"locations_scanned"}},
@@ -110,6 +117,7 @@ enum BlockId : std::size_t {
   kWireLoops,
   kOutputLoops,
   kDenseOutputLoops,
+  kMultiScatterLoops,
   kZbufferLoops,
   kSpanListLoops,
   kActiveLoops,
@@ -133,9 +141,11 @@ const std::vector<Block>& blocks() {
       {"wire records", {kWire}},
       {"sparse output", {kRecords}},
       {"dense output", {kScan}},
+      {"multiscatter", {kTriangleRecords}},
       // The frame-buffer z-buffer: a triangle's edges, its spans (found and started), its
-      // fragments; the scenes' and sizes' different mixes separate them.
-      {"z-buffer", {kEdges, kSpans, kPixels}},
+      // fragments, its far lines; the scenes' and sizes' different mixes separate them (the
+      // scattered orders: the same triangles, other far lines).
+      {"z-buffer", {kEdges, kSpans, kPixels, kFarLines}},
       {"span lists", {kSort}},
       {"active z-buffer", {kScanline}}};
   return b;
@@ -326,6 +336,76 @@ void render_loops(Probe& p, const Picture& pic, bool kurc) {
   p.run();
 }
 
+// The frame-buffer z-buffer on the picture's triangles in a scattered order (a fixed shuffle):
+// the same triangles, spans and fragments as in file order, their far lines many more, as a
+// scanned mesh listed without locality has them (the bunny's file: docs/machines.md).
+void scattered_loops(Probe& p, const Picture& pic) {
+  Scene s = pic.s;
+  SplitMix64 rng(20261202);
+  for (std::size_t i = s.triangles.size(); i > 1; --i)
+    std::swap(s.triangles[i - 1], s.triangles[rng.next() % i]);
+  const NodeRenderer nr(s);
+  std::vector<ProjectedVertex> pv(s.vertices.size());
+  Counters ignored;
+  for (std::size_t i = 0; i < pv.size(); ++i)
+    pv[i] = nr.project(s.vertices[i], ignored);
+  Framebuffer fb = nr.make_framebuffer(RowSet::all(pic.size));
+  TriangleBatch one;
+  p.time(
+      kZbufferLoops, pic.name + " scattered", [&] { fb.clear(nr.background()); },
+      [&](Counters& c) {
+        for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+          one.clear();
+          nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, one, c);
+          draw_batch(one, nr.shade(), fb, c);
+        }
+      });
+  p.run();
+}
+
+// Charles et al.'s MultiScatter of triangles (elastic_multiscatter.hpp) among `nodes` nodes, all
+// in this process: each node's block of the picture's triangles packed for the slices of equal
+// rows, then each slice read out of its messages; the records' bytes as elastic charges them.
+void multiscatter_loops(Probe& p, const Picture& pic, int nodes) {
+  const Scene& s = pic.s;
+  const NodeRenderer nr(s);
+  std::vector<ProjectedVertex> pv(s.vertices.size());
+  Counters ignored;
+  for (std::size_t i = 0; i < pv.size(); ++i)
+    pv[i] = nr.project(s.vertices[i], ignored);
+  const std::size_t T = s.triangles.size();
+  std::vector<std::vector<TriangleRecord>> blocks(nodes);
+  std::vector<std::vector<RowExtent>> ext(nodes);
+  for (int k = 0; k < nodes; ++k)
+    for (std::size_t i = block_range(T, nodes, k).begin; i < block_range(T, nodes, k).end; ++i) {
+      const Triangle& t = s.triangles[i];
+      const ProjectedVertex* p3[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
+      RowExtent e;
+      if (!row_extent(p3, pic.size, pic.size, e.y0, e.y1)) e = {1, 0};
+      blocks[k].push_back({std::uint32_t(i), t});
+      ext[k].push_back(e);
+    }
+  std::vector<int> bounds;
+  for (int k = 0; k <= nodes; ++k)
+    bounds.push_back(int(block_begin(std::size_t(pic.size), nodes, k)));
+  const elastic::BroadcastVertices none;
+  p.time(kMultiScatterLoops, pic.name + " " + std::to_string(nodes) + " nodes", [&](Counters& c) {
+    std::vector<elastic::SlicePayloads> sent;
+    for (int k = 0; k < nodes; ++k) {
+      sent.push_back(elastic::pack_slices(blocks[k], ext[k], bounds, false, none, c));
+      for (std::size_t n : sent.back().triangles)
+        c.bytes_packed += n * elastic::kTriangleWireBytes;
+    }
+    for (int r = 0; r < nodes; ++r) {
+      std::vector<Bytes> got;
+      for (int k = 0; k < nodes; ++k)
+        got.push_back(std::move(sent[k].payloads[r]));
+      (void)elastic::read_slices<elastic::BroadcastVertices>(got, T, false, 0, c);
+    }
+  });
+  p.run();
+}
+
 // Blazek's nodes: the thesis's spheres (the workloads' triangles, as few or as many a sphere)
 // tessellated, then set up and drawn into the node's frame buffer.
 void sphere_loops(Probe& p, const Picture& pic) {
@@ -384,11 +464,20 @@ void buffer_loops(Probe& p, int size, bool merges) {
   p.run();
 }
 
+// The table the probe's multipliers scale: the 80386's physical estimates, and for a far line
+// (nothing on the 80386, whose frame-buffer accesses are all priced beyond its cache:
+// operations.json) a nominal 100 ns, a DRAM access of this era, its multiplier a fraction of it.
+CostTable probe_prior() {
+  CostTable t = zcube_loop_seconds(cpu_model("i80386"));
+  t.far_lines = 100e-9;
+  return t;
+}
+
 // Solves the blocks in order: a loop's time less its groups measured before, divided among the
 // block's own groups (non-negative least squares on relative errors). Returns one multiplier a
 // group on the prior table and writes every loop's fitted prediction into `log`.
 std::vector<double> solve(const std::vector<Loop>& loops, nlohmann::json& log) {
-  const CostTable prior = zcube_loop_seconds(cpu_model("i80386"));
+  const CostTable prior = probe_prior();
   std::vector<double> k(kGroups, 0.0);
   std::vector<bool> known(kGroups, false);
   std::vector<std::vector<double>> A;
@@ -463,10 +552,17 @@ CostTable measure_cpu(const std::string& root, double min_seconds, nlohmann::jso
   // sizes and triangle sizes: 512 and 1024 (elastic's bunny at 1024x1024: 2-4 rows and 2 pixels a
   // span), 2048 and 4096 (Kurc's bunny at 5120x5120: 20 rows, 8 pixels a span; a frame buffer of
   // hundreds of megabytes). The thesis's 16 spheres: Blazek's triangles at the workload's size.
+  // The bone shuffled: the z-buffer's far lines of a scanned mesh listed without locality (the
+  // bunny's file). MultiScatter's triangle records: the bone's triangles among 1 and 2 nodes.
   render_loops(p, load(root + "/scenes/bone.json", 512), false);
   render_loops(p, load(root + "/scenes/bone.json", 1024), false);
   render_loops(p, load(root + "/scenes/bone.json", 2048), false);
   render_loops(p, load(root + "/scenes/bone.json", 4096), true);
+  scattered_loops(p, load(root + "/scenes/bone.json", 512));
+  scattered_loops(p, load(root + "/scenes/bone.json", 1024));
+  scattered_loops(p, load(root + "/scenes/bone.json", 2048));
+  multiscatter_loops(p, load(root + "/scenes/bone.json", 1024), 1);
+  multiscatter_loops(p, load(root + "/scenes/bone.json", 1024), 2);
   sphere_loops(p, load(root + "/scenes/blazek/thesis_spheres_16.json", 512));
   buffer_loops(p, 4096, true);
   buffer_loops(p, 5120, false);
@@ -474,7 +570,7 @@ CostTable measure_cpu(const std::string& root, double min_seconds, nlohmann::jso
   std::stable_sort(p.loops.begin(), p.loops.end(),
                    [](const Loop& a, const Loop& b) { return a.block < b.block; });
   const std::vector<double> k = solve(p.loops, log);
-  return scale_groups(zcube_loop_seconds(cpu_model("i80386")), probe_groups(), k);
+  return scale_groups(probe_prior(), probe_groups(), k);
 }
 
 } // namespace zc

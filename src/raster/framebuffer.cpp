@@ -19,6 +19,7 @@ Framebuffer::Framebuffer(int width, RowSet rows, glm::vec3 background)
 
 void Framebuffer::clear(glm::vec3 background) {
   const std::size_t n = std::size_t(width_) * std::size_t(rows_.count());
+  recent_.reset(n);
   depth_.assign(n, std::numeric_limits<float>::infinity());
   ids_.assign(n, kNoTriangle);
   const std::uint8_t bg[3] = {to_byte(background.x), to_byte(background.y), to_byte(background.z)};

@@ -9,6 +9,8 @@
 
 #include <glm/glm.hpp>
 
+#include "raster/recent_lines.hpp"
+
 namespace zc {
 
 // Rows begin, begin+stride, ... below end.
@@ -92,6 +94,8 @@ public:
   const std::vector<float>& depth() const { return depth_; }
   std::vector<std::uint32_t>& ids() { return ids_; }
   const std::vector<std::uint32_t>& ids() const { return ids_; }
+  // The depth lines the z-buffer entered last (draw_batch's far_lines); clear() resets it.
+  RecentLines& recent_lines() { return recent_; }
 
 private:
   int width_ = 0;
@@ -99,6 +103,7 @@ private:
   std::vector<std::uint8_t> rgb_;
   std::vector<float> depth_;
   std::vector<std::uint32_t> ids_;
+  RecentLines recent_;
 };
 
 } // namespace zc

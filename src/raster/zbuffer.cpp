@@ -287,12 +287,21 @@ void shaded_row(const ScreenTriangle& t, const TriangleBatch& batch, const Shade
   }
 }
 
+// The depth lines span [x0, x1] of row y enters in `recent`: those it did not hold (far_lines).
+std::uint64_t enter_lines(RecentLines* recent, const Framebuffer& fb, int y, int x0, int x1) {
+  if (!recent) return 0;
+  const std::size_t i = fb.index(x0, y);
+  return recent->enter(i, i + std::size_t(x1 - x0));
+}
+
 void draw_untextured(const ScreenTriangle& t, const ShadeContext& ctx, const RowSet& rows,
-                     Framebuffer& fb, Counters& c, std::uint64_t* newly_covered) {
+                     Framebuffer& fb, Counters& c, std::uint64_t* newly_covered,
+                     RecentLines* recent) {
   const FlatSpan s = flat(t, ctx, fb);
-  std::uint64_t spans = 0, generated = 0, written = 0, first = 0;
+  std::uint64_t spans = 0, generated = 0, written = 0, first = 0, far = 0;
   for_each_span(t, rows, fb.width(), [&](int y, int x0, int x1) {
     ++spans;
+    far += enter_lines(recent, fb, y, x0, x1);
     flat_row(t, s, y, x0, x1, fb, written, first);
     generated += std::uint64_t(x1 - x0 + 1);
   });
@@ -302,21 +311,24 @@ void draw_untextured(const ScreenTriangle& t, const ShadeContext& ctx, const Row
   c.pixels_generated += generated;
   c.pixels_tested += generated;
   c.pixels_written += written;
+  c.far_lines += far;
   if (newly_covered) *newly_covered += first;
 }
 
 } // namespace
 
 void draw_triangle(const ScreenTriangle& t, const TriangleBatch& batch, const ShadeContext& ctx,
-                   const RowSet& rows, Framebuffer& fb, Counters& c, std::uint64_t* newly_covered) {
+                   const RowSet& rows, Framebuffer& fb, Counters& c, std::uint64_t* newly_covered,
+                   RecentLines* recent) {
   if (t.tex < 0) {
-    draw_untextured(t, ctx, rows, fb, c, newly_covered);
+    draw_untextured(t, ctx, rows, fb, c, newly_covered, recent);
     return;
   }
   ++c.edge_walks;
   for_each_span(t, rows, fb.width(), [&](int y, int x0, int x1) {
     ++c.spans;
     ++c.span_starts;
+    c.far_lines += enter_lines(recent, fb, y, x0, x1);
     shaded_row(t, batch, ctx, y, x0, x1, fb, c, newly_covered);
     const std::uint64_t n = std::uint64_t(x1 - x0 + 1);
     c.pixels_generated += n;
@@ -327,6 +339,7 @@ void draw_triangle(const ScreenTriangle& t, const TriangleBatch& batch, const Sh
 void draw_span(const ScreenTriangle& t, const TriangleBatch& batch, const ShadeContext& ctx, int y,
                int x0, int x1, Framebuffer& fb, Counters& c) {
   ++c.span_starts;
+  c.far_lines += enter_lines(&fb.recent_lines(), fb, y, x0, x1);
   const std::uint64_t n = std::uint64_t(x1 - x0 + 1);
   c.pixels_generated += n;
   c.pixels_tested += n;
@@ -341,7 +354,7 @@ void draw_span(const ScreenTriangle& t, const TriangleBatch& batch, const ShadeC
 
 void draw_batch(const TriangleBatch& batch, const ShadeContext& ctx, Framebuffer& fb, Counters& c) {
   for (const auto& t : batch.tris)
-    draw_triangle(t, batch, ctx, fb.rows(), fb, c);
+    draw_triangle(t, batch, ctx, fb.rows(), fb, c, nullptr, &fb.recent_lines());
 }
 
 } // namespace zc

@@ -108,18 +108,23 @@ void for_each_span(const ScreenTriangle& t, const RowSet& rows, int width, F&& f
 // Scan-converts one screen triangle into `fb`, on the rows of `rows` (a subset of fb.rows()).
 // When `newly_covered` is given, it is increased by the pixels this triangle writes first (pixels
 // that held no triangle before): summed over a frame, the covered pixels without a final scan.
+// When `recent` is given, every span enters its depth lines there (c.far_lines: those it did not
+// hold).
 void draw_triangle(const ScreenTriangle& t, const TriangleBatch& batch, const ShadeContext& ctx,
                    const RowSet& rows, Framebuffer& fb, Counters& c,
-                   std::uint64_t* newly_covered = nullptr);
+                   std::uint64_t* newly_covered = nullptr, RecentLines* recent = nullptr);
 
 // Pixels [x0, x1] of row y of `t` (a span found before, e.g. from Kurc et al.'s span lists)
 // z-buffered into `fb`: the span started from its planes, then the same pixel loop as
 // draw_triangle's (eight pixels at a time when untextured), so the same pixels bit for bit. Counts
-// the span start and the fragments (generated, tested, written), not the span nor an edge walk.
+// the span start, the fragments (generated, tested, written) and the far lines of
+// fb.recent_lines(), not the span nor an edge walk.
 void draw_span(const ScreenTriangle& t, const TriangleBatch& batch, const ShadeContext& ctx, int y,
                int x0, int x1, Framebuffer& fb, Counters& c);
 
-// Draws every triangle of a batch, in order.
+// Draws every triangle of a batch, in order, counting the far lines of fb.recent_lines() (the
+// z-buffer of a node or of the sequential program, one triangle after another; the threaded
+// renderer's bands draw in another order and do not count them).
 void draw_batch(const TriangleBatch& batch, const ShadeContext& ctx, Framebuffer& fb, Counters& c);
 
 } // namespace zc

@@ -43,6 +43,10 @@ struct Counters {
   // not do: 0 on the iPSC machines, probed on this one (docs/machines.md, "zcube's own loops"):
   std::uint64_t wire_records = 0; // pixels converted to or from zcube's wire records for a merge
   std::uint64_t wire_bytes = 0;   // bytes copied into a message the modelled program sends in place
+  // Found by the MPI backend's runs on a machine with caches (docs/machines.md, "The order of the
+  // triangles"; "A triangle record is not a pixel record"):
+  std::uint64_t far_lines = 0;        // depth-buffer lines entered from outside RecentLines' window
+  std::uint64_t triangles_packed = 0; // triangle records gathered into / read out of messages
 
   Counters& operator+=(const Counters& o);
   friend Counters operator+(Counters a, const Counters& b) { return a += b; }
@@ -91,6 +95,8 @@ void from_json(const nlohmann::json& j, Counters& c); // absent fields are 0
   X(records_packed)                                                                                \
   X(locations_scanned)                                                                             \
   X(wire_records)                                                                                  \
-  X(wire_bytes)
+  X(wire_bytes)                                                                                    \
+  X(far_lines)                                                                                     \
+  X(triangles_packed)
 
 } // namespace zc

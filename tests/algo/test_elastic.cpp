@@ -77,7 +77,8 @@ TEST(Elastic, SlicesBalanceTheEstimatedLoadAndDuplicateCrossingTriangles) {
   // MultiScatter writes every record it sends field by field and reads every one it receives.
   std::uint64_t records = 0;
   for (const auto& n : r["per_node"])
-    records += n["phase_work"]["multiscatter_triangles"].value("records_packed", std::uint64_t(0));
+    records +=
+        n["phase_work"]["multiscatter_triangles"].value("triangles_packed", std::uint64_t(0));
   EXPECT_EQ(records, 2 * e["triangles_rendered"].get<std::uint64_t>());
 }
 

@@ -144,7 +144,7 @@ TEST(Platforms, CompactSimGridNativeFiguresCostsOnce) {
        at = x.find("zcube.cycles.", at + 1))
     ++cycles;
   EXPECT_EQ(cycles, CostTable{}.fields().size());
-  EXPECT_EQ(cycles, 27u);
+  EXPECT_EQ(cycles, 29u);
   const auto big = platform_xml(machine_spec("ipsc860"), 1024, Topology::Cube).size();
   EXPECT_LT(big, platform_xml(machine_spec("ipsc860"), 2, Topology::Cube).size() + 64);
   EXPECT_LT(big, 6000u);
