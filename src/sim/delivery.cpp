@@ -80,6 +80,11 @@ TransitPtr Delivery::post(int src, int dst, int tag, Message msg, Blocks blocks,
     notify(waiters_[dst], *m);
   } else if (events_driven_) {
     net_.holds(src, dst, bytes, m->holds);
+    for (Hold& h : m->holds) { // looked up once here, not at each acquisition and release
+      h.ids.resize(h.channels.size());
+      for (std::size_t i = 0; i < h.channels.size(); ++i)
+        h.ids[i] = channel_id(h.channels[i]);
+    }
     inboxes_[dst].push(m);
     advance(m, m->sent_at);
   } else {
@@ -189,8 +194,8 @@ void Delivery::advance(const TransitPtr& m, double t) {
   }
   for (;;) {
     const Hold& h = m->holds[m->stage];
-    while (m->next_channel < h.channels.size()) {
-      const std::uint32_t id = channel_id(h.channels[m->next_channel]);
+    while (m->next_channel < h.ids.size()) {
+      const std::uint32_t id = h.ids[m->next_channel];
       Channel& c = channels_[id];
       const bool free = !c.owner || (c.free_at <= t && c.waiters.empty());
       if (!free) {
@@ -227,8 +232,7 @@ std::uint32_t Delivery::channel_id(std::pair<int, int> c) {
 // when its next stage can start at `end` at once (no channel to release or acquire).
 bool Delivery::end_hold(const TransitPtr& m, double end) {
   const Hold& h = m->holds[m->stage];
-  for (auto ch : h.channels) {
-    const std::uint32_t id = channel_id(ch);
+  for (const std::uint32_t id : h.ids) {
     Channel& c = channels_[id];
     c.free_at = end;
     schedule_release(id, c);
@@ -260,9 +264,9 @@ void Delivery::process(const Event& e) {
   case Event::Kind::NextStage: {
     // Release the previous hold's channels in reverse order, continue, then the waiters go on.
     const Transit& m = *e.m;
-    const auto& prev = m.holds[m.stage - 1].channels;
+    const auto& prev = m.holds[m.stage - 1].ids;
     for (auto it = prev.rbegin(); it != prev.rend(); ++it) {
-      Channel& c = channels_[channel_id(*it)];
+      Channel& c = channels_[*it];
       if (c.owner == &m) hand_over(c, woken);
     }
     advance(e.m, e.time);

@@ -2,6 +2,7 @@
 // The simulated interconnect: moves a message of m bytes from one rank to another, taking the
 // virtual time the machine model and the fidelity say. Ranks 0..P-1 are nodes, P is the host
 // computer (srm), linked to node 0.
+#include <cstdint>
 #include <map>
 #include <utility>
 #include <vector>
@@ -18,7 +19,8 @@ namespace zc {
 // under circuit switching, plus the host link for the host computer's messages.
 struct Hold {
   std::vector<std::pair<int, int>> channels; // in acquisition order (dimension order on a cube)
-  double seconds = 0;                        // with the reverse directions idle
+  std::vector<std::uint32_t> ids; // Delivery's index of each channel, written once a message
+  double seconds = 0;             // with the reverse directions idle
   // On links whose directions slow each other down (NetworkParams::half_duplex_limited): after
   // fixed_s, `bytes` cross the directed `links` at a rate the reverse directions' traffic decides
   // (DuplexLinks); empty otherwise, and `seconds` is the whole hold.
