@@ -241,6 +241,15 @@ Picture load(const std::string& path, int size) {
   return p;
 }
 
+// Every vertex of `s` projected by `nr` (the loops' inputs; their counts are not timed).
+std::vector<ProjectedVertex> probe_projected_vertices(const NodeRenderer& nr, const Scene& s) {
+  std::vector<ProjectedVertex> pv(s.vertices.size());
+  Counters ignored;
+  for (std::size_t i = 0; i < pv.size(); ++i)
+    pv[i] = nr.project(s.vertices[i], ignored);
+  return pv;
+}
+
 // The loops of one scene at one size: projection, set-up, the frame-buffer z-buffer (set-up and
 // scan conversion, as elastic's slices and Blazek's nodes run it), Kurc et al.'s span lists and
 // active pixel z-buffer, the load estimate. `kurc`: also the active merge and the output (final
@@ -249,10 +258,8 @@ void render_loops(Probe& p, const Picture& pic, bool kurc) {
   const Scene& s = pic.s;
   const int size = pic.size;
   const NodeRenderer nr(s);
-  std::vector<ProjectedVertex> pv(s.vertices.size());
+  const std::vector<ProjectedVertex> pv = probe_projected_vertices(nr, s);
   Counters ignored;
-  for (std::size_t i = 0; i < pv.size(); ++i)
-    pv[i] = nr.project(s.vertices[i], ignored);
   // The inputs of the later loops, made once: every triangle set up, the span lists, the active
   // pixels and their odd and even rows, the frame buffers.
   TriangleBatch all;
@@ -345,10 +352,7 @@ void scattered_loops(Probe& p, const Picture& pic) {
   for (std::size_t i = s.triangles.size(); i > 1; --i)
     std::swap(s.triangles[i - 1], s.triangles[rng.next() % i]);
   const NodeRenderer nr(s);
-  std::vector<ProjectedVertex> pv(s.vertices.size());
-  Counters ignored;
-  for (std::size_t i = 0; i < pv.size(); ++i)
-    pv[i] = nr.project(s.vertices[i], ignored);
+  const std::vector<ProjectedVertex> pv = probe_projected_vertices(nr, s);
   Framebuffer fb = nr.make_framebuffer(RowSet::all(pic.size));
   TriangleBatch one;
   p.time(
@@ -369,10 +373,7 @@ void scattered_loops(Probe& p, const Picture& pic) {
 void multiscatter_loops(Probe& p, const Picture& pic, int nodes) {
   const Scene& s = pic.s;
   const NodeRenderer nr(s);
-  std::vector<ProjectedVertex> pv(s.vertices.size());
-  Counters ignored;
-  for (std::size_t i = 0; i < pv.size(); ++i)
-    pv[i] = nr.project(s.vertices[i], ignored);
+  const std::vector<ProjectedVertex> pv = probe_projected_vertices(nr, s);
   const std::size_t T = s.triangles.size();
   std::vector<std::vector<TriangleRecord>> blocks(nodes);
   std::vector<std::vector<RowExtent>> ext(nodes);
@@ -411,10 +412,7 @@ void multiscatter_loops(Probe& p, const Picture& pic, int nodes) {
 void sphere_loops(Probe& p, const Picture& pic) {
   const Scene& s = pic.s;
   const NodeRenderer nr(s);
-  std::vector<ProjectedVertex> pv(s.vertices.size());
-  Counters ignored;
-  for (std::size_t i = 0; i < pv.size(); ++i)
-    pv[i] = nr.project(s.vertices[i], ignored);
+  const std::vector<ProjectedVertex> pv = probe_projected_vertices(nr, s);
   Framebuffer fb = nr.make_framebuffer(RowSet::all(pic.size));
   TriangleBatch one;
   p.time(kTessellateLoops, pic.name, [&](Counters& c) {

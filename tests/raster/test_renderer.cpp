@@ -248,6 +248,17 @@ Scene spheres(int w, int h, std::uint64_t seed = 11) {
   return s;
 }
 
+// Every triangle of `s` projected and set up in scene order, counted into `c`.
+TriangleBatch set_up_all(const NodeRenderer& nr, const Scene& s, Counters& c) {
+  std::vector<ProjectedVertex> pv;
+  for (const auto& v : s.vertices)
+    pv.push_back(nr.project(v, c));
+  TriangleBatch b;
+  for (std::size_t i = 0; i < s.triangles.size(); ++i)
+    nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, b, c);
+  return b;
+}
+
 } // namespace
 
 TEST(Raster, ImageAndCountersIndependentOfThreadCount) {
@@ -269,12 +280,7 @@ TEST(Raster, BandsAndChunksDrawWhatOnePassDraws) {
     const Scene s = spheres(w, h);
     const NodeRenderer nr(s);
     Counters c;
-    std::vector<ProjectedVertex> pv;
-    for (const auto& v : s.vertices)
-      pv.push_back(nr.project(v, c));
-    TriangleBatch b;
-    for (std::size_t i = 0; i < s.triangles.size(); ++i)
-      nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, b, c);
+    const TriangleBatch b = set_up_all(nr, s, c);
     ASSERT_GT(b.tris.size(), 4096u); // several chunks
     Framebuffer one_pass = nr.make_framebuffer(RowSet::all(h));
     draw_batch(b, nr.shade(), one_pass, c);
@@ -299,12 +305,7 @@ TEST(Raster, SpansDrawnOneByOneDrawWhatTheTrianglesDraw) {
   const Scene s = spheres(300, 200);
   const NodeRenderer nr(s);
   Counters c;
-  std::vector<ProjectedVertex> pv;
-  for (const auto& v : s.vertices)
-    pv.push_back(nr.project(v, c));
-  TriangleBatch b;
-  for (std::size_t i = 0; i < s.triangles.size(); ++i)
-    nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, b, c);
+  const TriangleBatch b = set_up_all(nr, s, c);
   Framebuffer whole = nr.make_framebuffer(RowSet::all(200)), spans = whole;
   Counters cw, cs;
   draw_batch(b, nr.shade(), whole, cw);
