@@ -250,6 +250,21 @@ std::vector<ProjectedVertex> probe_projected_vertices(const NodeRenderer& nr, co
   return pv;
 }
 
+// The frame-buffer z-buffer as elastic's slices and Blazek's nodes run it: each triangle set up,
+// then drawn, into `fb` cleared before each call. Every argument must outlive p.run().
+void time_zbuffer_loop(Probe& p, const std::string& what, const Scene& s, const NodeRenderer& nr,
+                       const std::vector<ProjectedVertex>& pv, Framebuffer& fb) {
+  p.time(
+      kZbufferLoops, what, [&] { fb.clear(nr.background()); },
+      [&s, &nr, &pv, &fb, one = TriangleBatch{}](Counters& c) mutable {
+        for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+          one.clear();
+          nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, one, c);
+          draw_batch(one, nr.shade(), fb, c);
+        }
+      });
+}
+
 // The loops of one scene at one size: projection, set-up, the frame-buffer z-buffer (set-up and
 // scan conversion, as elastic's slices and Blazek's nodes run it), Kurc et al.'s span lists and
 // active pixel z-buffer, the load estimate. `kurc`: also the active merge and the output (final
@@ -354,16 +369,7 @@ void scattered_loops(Probe& p, const Picture& pic) {
   const NodeRenderer nr(s);
   const std::vector<ProjectedVertex> pv = probe_projected_vertices(nr, s);
   Framebuffer fb = nr.make_framebuffer(RowSet::all(pic.size));
-  TriangleBatch one;
-  p.time(
-      kZbufferLoops, pic.name + " scattered", [&] { fb.clear(nr.background()); },
-      [&](Counters& c) {
-        for (std::size_t i = 0; i < s.triangles.size(); ++i) {
-          one.clear();
-          nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, one, c);
-          draw_batch(one, nr.shade(), fb, c);
-        }
-      });
+  time_zbuffer_loop(p, pic.name + " scattered", s, nr, pv, fb);
   p.run();
 }
 
@@ -425,15 +431,7 @@ void sphere_loops(Probe& p, const Picture& pic) {
       nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, one, c);
     }
   });
-  p.time(
-      kZbufferLoops, pic.name, [&] { fb.clear(nr.background()); },
-      [&](Counters& c) {
-        for (std::size_t i = 0; i < s.triangles.size(); ++i) {
-          one.clear();
-          nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, one, c);
-          draw_batch(one, nr.shade(), fb, c);
-        }
-      });
+  time_zbuffer_loop(p, pic.name, s, nr, pv, fb);
   p.run();
 }
 
