@@ -13,9 +13,7 @@ using simgrid::kernel::timer::Timer;
 
 namespace {
 constexpr double kNoWakeup = std::numeric_limits<double>::quiet_NaN();
-}
 
-namespace {
 // The Wakeups of the simulation this thread runs, whose clock SimGrid's time advances update.
 thread_local Wakeups* clock_owner = nullptr;
 } // namespace
