@@ -15,17 +15,14 @@ node), which tests read back.
 """
 import json, sys
 
+from plot_figure import META, figure  # matplotlib's Agg figures, no pyplot
 import matplotlib
-
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.artist import setp
 from matplotlib.collections import LineCollection, PolyCollection
+from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
-# No version string nor date: the same report gives the same file, in every format.
-META = {"png": {"Software": None}, "svg": {"Date": None}, "pdf": {"CreationDate": None}}
-plt.rcParams["svg.hashsalt"] = "zcube"  # SVG ids from the content, not a random salt
 MAX_EXACT_ROWS = 64
 MAX_MESSAGES = 1500
 TIME_BINS = 1200
@@ -55,19 +52,22 @@ def rectangles(spans, row, top, height):
 
 
 def draw_exact(ax, tracks, pcol):
+    # One collection for every band of every row, painted in the order of a collection per band:
+    # row by row, its phases outermost first (nested phases over their parents), then its
+    # activities kind by kind. (A collection each cost more than drawing them.)
+    polys, colours = [], []
     for row, t in enumerate(tracks):
-        # Phases outermost first, so nested phases are drawn over their parents.
         for p in sorted(t["phases"], key=lambda p: p["depth"]):
             if p["end_s"] > p["begin_s"]:
-                ax.add_collection(PolyCollection(rectangles([(p["begin_s"], p["end_s"])], row, -0.42, 0.4),
-                                                 facecolors=[pcol[p["name"]]], edgecolors="none"))
+                polys += rectangles([(p["begin_s"], p["end_s"])], row, -0.42, 0.4)
+                colours.append(pcol[p["name"]])
         by_kind = {k: [] for k in ACTIVITIES}
         for k, b, e in t["acts"]:
             by_kind[k].append((b, e))
         for k, spans in by_kind.items():
-            if spans:
-                ax.add_collection(PolyCollection(rectangles(spans, row, 0.0, 0.42),
-                                                 facecolors=ACTIVITY_COLOURS[k], edgecolors="none"))
+            polys += rectangles(spans, row, 0.0, 0.42)
+            colours += [ACTIVITY_COLOURS[k]] * len(spans)
+    ax.add_collection(PolyCollection(polys, facecolors=colours, edgecolors="none"))
 
 
 def covered(spans, edges):
@@ -198,7 +198,7 @@ def chart(report_path, out):
     nrows = len(tracks)
     exact = nrows <= MAX_EXACT_ROWS
     row_in = 0.26 if exact else 6.0 / nrows
-    fig = plt.figure(figsize=(12, max(3.6, 2.6 + nrows * row_in)))
+    fig = figure(figsize=(12, max(3.6, 2.6 + nrows * row_in)))
     gs = fig.add_gridspec(2, 1, height_ratios=[max(1.0, nrows * row_in), 1.1], hspace=0.08)
     ax = fig.add_subplot(gs[0])
     strip = fig.add_subplot(gs[1], sharex=ax)
@@ -221,7 +221,7 @@ def chart(report_path, out):
     note = f"{n_msgs} messages" + (f", 1 in {step} drawn" if step > 1 else "")
     note += "" if exact else f"; rows binned into {TIME_BINS} time steps"
     ax.text(1.0, 1.005, note, transform=ax.transAxes, ha="right", va="bottom", fontsize=7)
-    plt.setp(ax.get_xticklabels(), visible=False)
+    setp(ax.get_xticklabels(), visible=False)
     utilisation(strip, tracks, total)
     strip.set_xlabel("virtual time (s)" if not r.get("measured") else "measured time (s)")
     # Two legends: what the upper band of a row shows, and the lower one.
@@ -230,7 +230,7 @@ def chart(report_path, out):
                        bbox_to_anchor=(1.005, 1.0), fontsize=7, frameon=False, alignment="left")
     ax.add_artist(phases)
     acts = [Patch(color=ACTIVITY_COLOURS[k], label=k) for k in ACTIVITIES]
-    acts.append(plt.Line2D([], [], color="#1f3b73", linewidth=0.8, label="message"))
+    acts.append(Line2D([], [], color="#1f3b73", linewidth=0.8, label="message"))
     strip.legend(handles=acts, title="activity (lower half of a row)", title_fontsize=7.5,
                  loc="upper left",
                  bbox_to_anchor=(1.005, 1.0), fontsize=7, frameon=False, alignment="left")
@@ -240,7 +240,6 @@ def chart(report_path, out):
     if out.endswith(".png"):
         meta["zcube-gantt"] = json.dumps(layout(fig, ax, tracks))
     fig.savefig(out, dpi=DPI, metadata=meta)
-    plt.close(fig)
 
 
 if __name__ == "__main__":

@@ -16,15 +16,10 @@ number of series and of out-of-memory marks) as JSON: the tests read the plots f
 import argparse, csv, json, math, os, re, sys
 from collections import defaultdict
 
-import matplotlib
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-plt.rcParams["svg.hashsalt"] = "zcube"  # SVG ids from the content, not a random salt
+from plot_figure import META, subplots  # matplotlib's Agg figures, no pyplot
 from matplotlib.lines import Line2D
 from matplotlib.ticker import FixedLocator, FuncFormatter, NullFormatter
 
-# No version string nor date: the same CSV gives the same file, in every format.
-META = {"png": {"Software": None}, "svg": {"Date": None}, "pdf": {"CreationDate": None}}
 FIGURES = []  # what --describe writes
 FORMAT = "png"
 OOM_STYLE = dict(marker="x", color="red", ms=7, mew=1.5, ls="none")
@@ -117,7 +112,6 @@ def save(fig, path):
     # Room for a figure legend under the panels and for the title above them.
     fig.tight_layout(rect=(0, 0.09 if fig.legends else 0, 1, 0.96 if fig._suptitle else 1))
     save_atomically(path, lambda tmp: fig.savefig(tmp, dpi=110, metadata=META[FORMAT]))
-    plt.close(fig)
 
 
 def save_atomically(path, write):
@@ -223,7 +217,7 @@ def kurc(d):
     if t2:
         scenes = list(dict.fromkeys(r["scene"] for r in t2))
         phases = list(dict.fromkeys(r["phase"] for r in t2))
-        fig, axes = plt.subplots(1, 2, figsize=(12, 4.5), sharey=False)
+        fig, axes = subplots(1, 2, figsize=(12, 4.5), sharey=False)
         for ax, scheme in zip(axes, ("pair-rs", "zbuf-exc")):
             w = 0.38
             for i, s in enumerate(scenes):
@@ -253,8 +247,8 @@ def kurc(d):
         # The HBP variants lie on their RS twins: dashed, hollow, another marker.
         styles = {s: (dict(ls="--", marker="s", ms=6, mfc="white") if s.endswith("hbp")
                       else dict(marker="o", ms=4)) for s in colors}
-        fig, axes = plt.subplots(1, len(keys), figsize=(4 * len(keys), 4.6), sharey=True,
-                                 squeeze=False)
+        fig, axes = subplots(1, len(keys), figsize=(4 * len(keys), 4.6), sharey=True,
+                             squeeze=False)
         axes = axes[0]
         oom = False
         for ax, (scene, size) in zip(axes, keys):
@@ -282,7 +276,7 @@ def charles(d):
     for ykey, fname, ylabel in (
             ("speedup", "speedup.png", "speed-up over the sequential renderer (1 node)"),
             ("efficiency", "efficiency.png", "efficiency (speed-up / P)")):
-        fig, ax = plt.subplots(figsize=(7.5, 5.2))
+        fig, ax = subplots(figsize=(7.5, 5.2))
         g = defaultdict(list)
         for r in su:
             r = dict(r)
@@ -339,8 +333,8 @@ def blazek(d, sub="blazek"):
             ("speedup", "speedup.png", "speed-up over node-initiated on 1 node"),
             ("efficiency", "efficiency.png", "efficiency (speed-up / P)")):
         # One panel per method on one shared log2 scale: the methods compare at a glance.
-        fig, axes = plt.subplots(1, len(methods), figsize=(4 * len(methods), 4.6), sharey=True,
-                                 squeeze=False)
+        fig, axes = subplots(1, len(methods), figsize=(4 * len(methods), 4.6), sharey=True,
+                             squeeze=False)
         axes = axes[0]
         oom = False
         for ax, m in zip(axes, methods):
@@ -373,7 +367,7 @@ def calibration(d):
         return target.rsplit("/", 1)[-1]
 
     panels = [("fit", tg)] + ([("cross-validation", cv)] if cv else [])
-    fig, axes = plt.subplots(1, len(panels), figsize=(6.2 * len(panels), 5.6), squeeze=False)
+    fig, axes = subplots(1, len(panels), figsize=(6.2 * len(panels), 5.6), squeeze=False)
     axes = axes[0]
     values = [number(r["paper"]) for r in tg] + [number(r["fitted"]) for r in tg] + \
         [number(r["prior"]) for r in tg] + [number(r["predicted_ms"]) for r in cv or []]
@@ -431,7 +425,7 @@ def fidelity(d):
         return
     runs = list(dict.fromkeys(r["run"] for r in fr))
     models = {"analytic": ("o", "#1f77b4", -0.17), "flow": ("s", "#d95f02", 0.17)}
-    fig, ax = plt.subplots(figsize=(8.5, 0.42 * len(runs) + 1.6))
+    fig, ax = subplots(figsize=(8.5, 0.42 * len(runs) + 1.6))
     ax.axvline(0, color="black", lw=1.2, label="circuit (the reference)")
     for r in fr:
         if r["fidelity"] not in models or number(r["rel_error"]) is None:
@@ -472,7 +466,7 @@ def compositing(d, sub="compositing"):
     machines = list(dict.fromkeys(r["machine"] for r in cube))
     shown = ("pair-rs", "aapc-hbp", "binary-swap", "direct-send", "best radix-k")
     colors = palette(set(shown))
-    fig, axes = plt.subplots(1, len(machines), figsize=(4.4 * len(machines), 4.4), squeeze=False)
+    fig, axes = subplots(1, len(machines), figsize=(4.4 * len(machines), 4.4), squeeze=False)
     for ax, mach in zip(axes[0], machines):
         g = defaultdict(list)
         best = {}
@@ -507,8 +501,8 @@ def compositing_best_k(b, out):
     machines = list(dict.fromkeys(r["machine"] for r in cube))
     scenes = sorted({r["scene"] for r in cube}, key=natural_key)
     colors = palette(set(scenes))
-    fig, axes = plt.subplots(1, len(machines), figsize=(4.4 * len(machines), 4.4), squeeze=False,
-                             sharey=True)
+    fig, axes = subplots(1, len(machines), figsize=(4.4 * len(machines), 4.4), squeeze=False,
+                         sharey=True)
     for ax, mach in zip(axes[0], machines):
         g = defaultdict(list)
         for r in cube:
@@ -558,7 +552,7 @@ def sweep(path, x, y, out):
     g = defaultdict(list)
     for r in rs:
         g[", ".join(f"{c}={r[c]}" for c in varying) or y].append(r)
-    fig, ax = plt.subplots(figsize=(7.5, 4.8))
+    fig, ax = subplots(figsize=(7.5, 4.8))
     xs_numeric = all(quantity(r[x]) is not None for r in rs)
     oom_x = []
     for i, (label, grp) in enumerate(sorted(g.items(), key=lambda kv: natural_key(kv[0]))):
@@ -622,7 +616,6 @@ def main(argv):
         for table in json.loads(a.units).values():
             UNITS.update(table)
     if a.gantt:
-        sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
         import plot_gantt
         for report, out in a.gantt:
             plot_gantt.chart(report, out)

@@ -1,0 +1,55 @@
+"""The matplotlib machinery of zcube's plot scripts (plot_results.py, plot_gantt.py): figures on the
+Agg canvas directly, without pyplot's state machine, and one cache of text sizes for every figure.
+The pictures are pyplot's, byte for byte: the same Figure, the same Agg renderer, the same PNG
+writer with the same options; only the bookkeeping around them is gone.
+"""
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.text
+from matplotlib.backends.backend_agg import FigureCanvasAgg, RendererAgg
+from matplotlib.figure import Figure
+
+matplotlib.rcParams["svg.hashsalt"] = "zcube"  # SVG ids from the content, not a random salt
+
+# No version string nor date: the same input gives the same file, in every format.
+META = {"png": {"Software": None}, "svg": {"Date": None}, "pdf": {"CreationDate": None}}
+
+
+def figure(**kw):
+    """A Figure on its Agg canvas: pyplot.figure without the figure manager and its registry (so
+    no close() is needed: the figure goes with its last reference)."""
+    fig = Figure(**kw)
+    FigureCanvasAgg(fig)
+    return fig
+
+
+def subplots(nrows=1, ncols=1, *, sharex=False, sharey=False, squeeze=True, **fig_kw):
+    """pyplot.subplots on figure()."""
+    fig = figure(**fig_kw)
+    return fig, fig.subplots(nrows, ncols, sharex=sharex, sharey=sharey, squeeze=squeeze)
+
+
+# matplotlib caches the size of a text per renderer, and every figure (and every dpi a figure is
+# drawn at) has a renderer of its own: the tick labels, titles and legends that all the plots share
+# were laid out again for each. An Agg text's size depends only on the text, its font and the dpi
+# (RendererAgg.get_text_width_height_descent), so one cache keyed by those serves every figure with
+# the very same numbers. Other renderers (SVG, PDF) keep matplotlib's own cache.
+_TEXT_SIZES = {}
+_per_renderer = getattr(matplotlib.text, "_get_text_metrics_with_cache", None)
+
+
+def _text_size(renderer, text, fontprop, ismath, dpi):
+    if type(renderer) is not RendererAgg:
+        return _per_renderer(renderer, text, fontprop, ismath, dpi)
+    key = (text, fontprop, ismath, renderer.dpi)
+    size = _TEXT_SIZES.get(key)
+    if size is None:
+        size = renderer.get_text_width_height_descent(text, fontprop, ismath)
+        # A copy in the key: a later change to the caller's font must not change the entry.
+        _TEXT_SIZES[(text, fontprop.copy(), ismath, renderer.dpi)] = size
+    return size
+
+
+if _per_renderer:  # (matplotlib 3.6 names it so; another version keeps its own cache)
+    matplotlib.text._get_text_metrics_with_cache = _text_size
