@@ -20,7 +20,7 @@ from plot_figure import META, subplots  # matplotlib's Agg figures, no pyplot
 from matplotlib.lines import Line2D
 from matplotlib.ticker import FixedLocator, FuncFormatter, NullFormatter
 
-FIGURES = []  # what --describe writes
+FIGURES = None  # what --describe writes (a list when asked: reading the ticks costs a layout)
 FORMAT = "png"
 OOM_STYLE = dict(marker="x", color="red", ms=7, mew=1.5, ls="none")
 OOM_LABEL = "out of memory"
@@ -94,6 +94,15 @@ def legend_labels(fig):
 
 def save(fig, path):
     path = os.path.splitext(path)[0] + "." + FORMAT
+    if FIGURES is not None:
+        describe(fig, path)
+    # Room for a figure legend under the panels and for the title above them.
+    fig.tight_layout(rect=(0, 0.09 if fig.legends else 0, 1, 0.96 if fig._suptitle else 1))
+    save_atomically(path, lambda tmp: fig.savefig(tmp, dpi=110, metadata=META[FORMAT]))
+
+
+def describe(fig, path):
+    """What the figure shows, for --describe (read before the layout, as the tests always did)."""
     FIGURES.append({
         "file": path,
         "title": fig._suptitle.get_text() if fig._suptitle else "",
@@ -109,9 +118,6 @@ def save(fig, path):
                   "yticklabels": [t.get_text() for t in ax.get_yticklabels()]}
                  for ax in fig.axes],
         "legend": legend_labels(fig)})
-    # Room for a figure legend under the panels and for the title above them.
-    fig.tight_layout(rect=(0, 0.09 if fig.legends else 0, 1, 0.96 if fig._suptitle else 1))
-    save_atomically(path, lambda tmp: fig.savefig(tmp, dpi=110, metadata=META[FORMAT]))
 
 
 def save_atomically(path, write):
@@ -377,22 +383,33 @@ def calibration(d):
         ax.fill_between([lo, hi], [lo / 1.1, hi / 1.1], [lo * 1.1, hi * 1.1], color="0.85",
                         label="within 10 %")
         ax.plot([lo, hi], [lo, hi], "k-", lw=0.8, label="predicted = paper")
+        # One scatter per marker and colour (a scatter each cost more than drawing them): the
+        # prior tables first, the fitted ones over them.
         if name == "fit":
+            by_mark = defaultdict(list)
             for r in rs:
-                m = phase_marks.get(phase(r["target"]), "o")
-                ax.scatter(number(r["paper"]), number(r["prior"]), marker=m, s=26,
+                by_mark[phase_marks.get(phase(r["target"]), "o")].append(r)
+            for m, group in by_mark.items():
+                ax.scatter([number(r["paper"]) for r in group],
+                           [number(r["prior"]) for r in group], marker=m, s=26,
                            facecolors="none", edgecolors="0.45")
-                ax.scatter(number(r["paper"]), number(r["fitted"]), marker=m, s=30, color="C0")
+            for m, group in by_mark.items():
+                ax.scatter([number(r["paper"]) for r in group],
+                           [number(r["fitted"]) for r in group], marker=m, s=30, color="C0")
             ax.scatter([], [], marker="o", facecolors="none", edgecolors="0.45",
                        label="prior table (sources, before the fit)")
             ax.scatter([], [], marker="o", color="C0", label="fitted table")
             ax.set_title("Fit: all targets (in sample)", fontsize=10.5)
         else:
             folds = list(dict.fromkeys(r["fold"] for r in rs))
+            by_style = defaultdict(list)
             for r in rs:
-                ax.scatter(number(r["paper_ms"]), number(r["predicted_ms"]),
-                           marker=phase_marks.get(phase(r["target"]), "o"), s=30,
-                           color="C%d" % (folds.index(r["fold"]) + 1))
+                by_style[phase_marks.get(phase(r["target"]), "o"),
+                         "C%d" % (folds.index(r["fold"]) + 1)].append(r)
+            for (m, colour), group in by_style.items():
+                ax.scatter([number(r["paper_ms"]) for r in group],
+                           [number(r["predicted_ms"]) for r in group], marker=m, s=30,
+                           color=colour)
             for i, f in enumerate(folds):
                 ax.scatter([], [], marker="o", color="C%d" % (i + 1),
                            label=f"fold {f.replace('_', ' #').replace('pot', ' POT')} held out")
@@ -598,7 +615,7 @@ def sweep(path, x, y, out):
 
 
 def main(argv):
-    global FORMAT
+    global FORMAT, FIGURES
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--format", choices=("png", "svg", "pdf"), default="png")
     p.add_argument("--units", help="zcube's unit tables as JSON ({kind: {unit: factor}})")
@@ -612,6 +629,8 @@ def main(argv):
     p.add_argument("results", nargs="?")
     a = p.parse_args(argv)
     FORMAT = a.format
+    if a.describe:
+        FIGURES = []
     if a.units:
         for table in json.loads(a.units).values():
             UNITS.update(table)
@@ -637,10 +656,10 @@ def main(argv):
     elif not a.gantt:
         p.error("give RESULTS_DIR, --sweep or --gantt")
     if a.describe:
-        def describe(tmp):
+        def write_description(tmp):
             with open(tmp, "w") as f:
                 json.dump(FIGURES, f, indent=1)
-        save_atomically(a.describe, describe)
+        save_atomically(a.describe, write_description)
 
 
 if __name__ == "__main__":
