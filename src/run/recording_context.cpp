@@ -18,7 +18,7 @@ void RecordingContext::charge(const Counters& w) {
 
 void RecordingContext::phase_begin(const std::string& name) {
   open_.emplace_back(name, comm_.now());
-  stats_.phase = name;
+  stats_.set_phase(name);
   if (std::find(phase_order_.begin(), phase_order_.end(), name) == phase_order_.end())
     phase_order_.push_back(name);
 }
@@ -27,7 +27,7 @@ void RecordingContext::phase_end() {
   if (open_.empty()) return;
   auto [name, t0] = open_.back();
   open_.pop_back();
-  stats_.phase = open_.empty() ? std::string() : open_.back().first;
+  stats_.set_phase(open_.empty() ? std::string() : open_.back().first);
   const double t1 = comm_.now();
   phase_totals_[name] += t1 - t0;
   if (stats_.log) stats_.log->phases.push_back({name, int(open_.size()), t0, t1});

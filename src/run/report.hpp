@@ -36,7 +36,10 @@ struct NodeStats {
   double busy_s = 0, comm_s = 0, finish_s = 0;
   std::uint64_t bytes_sent = 0, messages = 0; // bytes_sent: charged bytes
   std::uint64_t payload_bytes_sent = 0;
-  std::string phase;                            // the innermost open phase ("" outside every phase)
+  std::string phase; // the innermost open phase ("" outside every phase); set by set_phase
+  // Bumped by every set_phase: a backend that keeps the current phase's phase_traffic entry
+  // between sends checks this counter instead of comparing the name on every send.
+  std::uint64_t phase_changes = 0;
   std::map<std::string, Traffic> phase_traffic; // what was sent in each phase
   double memory = 0, peak_memory = 0;
   std::shared_ptr<EventLog> log; // the node's timeline; null unless one was asked for
@@ -46,6 +49,10 @@ struct NodeStats {
   double timed_end_s = 0;        // when
   // The end of the node's timed region: end_timed_region's time, else the node's finish.
   double timed_until_s() const { return timed_ended ? timed_end_s : finish_s; }
+  void set_phase(const std::string& name) {
+    phase = name;
+    ++phase_changes;
+  }
   // A send of `payload` bytes charged as `charged` (the backends call it).
   void count_send(std::size_t payload, std::size_t charged) {
     bytes_sent += charged;

@@ -67,9 +67,9 @@ SendHandle SimComm::post(int dst, int tag, Message msg, std::size_t payload_byte
   check_rank(dst, "send");
   if (charge_payloads_) msg.charged = payload_bytes;
   // NodeStats::count_send, with the current phase's entry remembered between sends.
-  if (!phase_traffic_ || traffic_phase_ != stats_.phase) {
+  if (!phase_traffic_ || traffic_phase_ != stats_.phase_changes) {
     phase_traffic_ = &stats_.phase_traffic[stats_.phase];
-    traffic_phase_ = stats_.phase;
+    traffic_phase_ = stats_.phase_changes;
   }
   stats_.bytes_sent += msg.charged;
   stats_.payload_bytes_sent += payload_bytes;

@@ -45,8 +45,9 @@ private:
   Topology topology_;
   Delivery& delivery_;
   NodeStats& stats_;
-  Traffic* phase_traffic_ = nullptr; // stats_.phase_traffic[traffic_phase_], while it runs
-  std::string traffic_phase_;
+  // stats_.phase_traffic[stats_.phase], while stats_.phase_changes stays traffic_phase_.
+  Traffic* phase_traffic_ = nullptr;
+  std::uint64_t traffic_phase_ = 0;
   bool charge_payloads_;
 };
 
