@@ -92,9 +92,9 @@ multiscatter_triangles(NodeContext& ctx, const LocalScene& local,
   }
   ctx.charge_packing(gathered_bytes);
   ctx.charge(gathered);
-  std::vector<Bytes> got;
+  std::vector<Payload> got; // read in place: shared payloads are not copied
   for (auto& m : coll::alltoallv(ctx.comm(), std::move(send)))
-    got.push_back(std::move(m.payload).take());
+    got.push_back(std::move(m.payload));
   Counters read; // each received record read back field by field
   auto slice = read_slices<Vertices>(got, local.scene_triangles, with_material, material, read);
   ctx.charge(read);

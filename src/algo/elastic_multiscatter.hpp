@@ -9,6 +9,7 @@
 
 #include "algo/elastic_steps.hpp"
 #include "algo/elastic_wire.hpp"
+#include "comm/payload.hpp"
 #include "comm/wire.hpp"
 #include "util/block_split.hpp"
 
@@ -16,7 +17,7 @@ namespace zc::elastic {
 
 // What a node sends: one payload a slice, and the triangles each carries.
 struct SlicePayloads {
-  std::vector<Bytes> payloads;
+  std::vector<Payload> payloads;
   std::vector<std::size_t> triangles;
 };
 
@@ -30,9 +31,22 @@ SlicePayloads pack_slices(const std::vector<TriangleRecord>& tris,
   std::vector<std::vector<std::uint32_t>> picked(P);
   for (std::size_t i = 0; i < tris.size(); ++i)
     for_each_slice(bounds, extents[i], [&](int k) { picked[k].push_back(std::uint32_t(i)); });
+  const std::size_t record_bytes =
+      kTriangleWireBytes + (with_material ? 4 : 0) + Vertices::kExtraWireBytes;
   SlicePayloads out;
+  out.payloads.reserve(std::size_t(P));
+  out.triangles.reserve(std::size_t(P));
+  // Most slices get none of the block's triangles (all of them at 1024 nodes but a few): their
+  // messages are one same bitmask of no triangle, made once and shared (payloads are immutable).
+  Payload nothing;
   for (int k = 0; k < P; ++k) {
-    Bytes b = selection_header(tris.size(), picked[k]);
+    if (picked[k].empty()) {
+      if (nothing.empty()) nothing = selection_header(tris.size(), picked[k], 0);
+      out.payloads.push_back(nothing);
+      out.triangles.push_back(0);
+      continue;
+    }
+    Bytes b = selection_header(tris.size(), picked[k], record_bytes);
     for (auto i : picked[k]) {
       append_triangle(b, tris[i], with_material);
       pv.append_extra(b, tris[i]);
@@ -45,17 +59,18 @@ SlicePayloads pack_slices(const std::vector<TriangleRecord>& tris,
 }
 
 // The slice's records, read out of the messages `got` of senders 0..P-1 (sender s holds the
-// block block_range(T, P, s) of the scene's T triangles). `w` counts a triangle packed a record
-// read.
-template <class Vertices>
-std::vector<typename Vertices::Record> read_slices(const std::vector<Bytes>& got, std::size_t T,
+// block block_range(T, P, s) of the scene's T triangles), Bytes or Payloads. `w` counts a
+// triangle packed a record read.
+template <class Vertices, class Got>
+std::vector<typename Vertices::Record> read_slices(const Got& got, std::size_t T,
                                                    bool with_material, std::uint32_t material,
                                                    Counters& w) {
   const int P = int(got.size());
   std::vector<typename Vertices::Record> slice;
   for (int s = 0; s < P; ++s) {
     const BlockRange block = block_range(T, P, s);
-    RecordReader in(got[s], "multiscatter");
+    const Bytes& bytes = got[std::size_t(s)];
+    RecordReader in(bytes, "multiscatter");
     for (auto i : read_selection(in, block.size())) {
       const TriangleRecord t =
           read_triangle(in, std::uint32_t(block.begin + i), with_material, material);

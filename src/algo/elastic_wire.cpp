@@ -27,8 +27,11 @@ TriangleRecord read_triangle(RecordReader& in, std::uint32_t id, bool with_mater
   return t;
 }
 
-Bytes selection_header(std::size_t n, const std::vector<std::uint32_t>& picked) {
-  Bytes b((n + 7) / 8, 0);
+Bytes selection_header(std::size_t n, const std::vector<std::uint32_t>& picked,
+                       std::size_t record_bytes) {
+  Bytes b;
+  b.reserve((n + 7) / 8 + picked.size() * record_bytes); // one allocation for the whole message
+  b.resize((n + 7) / 8, 0);
   for (auto i : picked)
     b[i / 8] = std::uint8_t(b[i / 8] | (1u << (i % 8)));
   return b;

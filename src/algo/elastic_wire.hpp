@@ -28,8 +28,9 @@ TriangleRecord read_triangle(RecordReader& in, std::uint32_t id, bool with_mater
                              std::uint32_t material);
 
 // A message carrying `picked` (ascending indices into a block of n triangles): the block's
-// bitmask; `append` then writes each picked triangle's record.
-Bytes selection_header(std::size_t n, const std::vector<std::uint32_t>& picked);
+// bitmask; `append` then writes each picked triangle's record, `record_bytes` each (reserved).
+Bytes selection_header(std::size_t n, const std::vector<std::uint32_t>& picked,
+                       std::size_t record_bytes);
 // The picked indices of a block of n triangles, read from a message's header.
 std::vector<std::uint32_t> read_selection(RecordReader& in, std::size_t n);
 
