@@ -176,7 +176,8 @@ def fill_idle(acts, total):
 def layout(fig, ax, tracks):
     # Pixel rows (from the top of the PNG) of every node's row, for the tests. No draw first: the
     # axes sit where subplots_adjust put them and their limits are set, so the transforms hold
-    # already (the same rows as after a draw, which rendered the whole figure once more).
+    # already (the same rows as after a draw, which rendered the whole figure once more), in the
+    # PNG's pixels as the figure is made at the PNG's dpi.
     height = fig.get_size_inches()[1] * DPI
     rows = []
     for i, t in enumerate(tracks):
@@ -198,7 +199,8 @@ def chart(report_path, out):
     nrows = len(tracks)
     exact = nrows <= MAX_EXACT_ROWS
     row_in = 0.26 if exact else 6.0 / nrows
-    fig = figure(figsize=(12, max(3.6, 2.6 + nrows * row_in)))
+    # At the dpi it is saved at: layout() reads the PNG's pixel rows from the figure's transforms.
+    fig = figure(figsize=(12, max(3.6, 2.6 + nrows * row_in)), dpi=DPI)
     gs = fig.add_gridspec(2, 1, height_ratios=[max(1.0, nrows * row_in), 1.1], hspace=0.08)
     ax = fig.add_subplot(gs[0])
     strip = fig.add_subplot(gs[1], sharex=ax)
