@@ -1,5 +1,6 @@
 #include "algo/elastic_wire.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 #include <stdexcept>
@@ -38,14 +39,25 @@ Bytes selection_header(std::size_t n, const std::vector<std::uint32_t>& picked,
 }
 
 std::vector<std::uint32_t> read_selection(RecordReader& in, std::size_t n) {
-  const std::uint8_t* mask = in.get_bytes((n + 7) / 8);
+  const std::size_t bytes = (n + 7) / 8;
+  const std::uint8_t* mask = in.get_bytes(bytes);
   std::vector<std::uint32_t> picked;
-  // Byte by byte, set bits only: a message usually carries few of the block's triangles.
-  for (std::size_t byte = 0; byte < (n + 7) / 8; ++byte)
-    for (unsigned bits = mask[byte]; bits != 0; bits &= bits - 1) {
-      const std::size_t i = byte * 8 + std::size_t(std::countr_zero(bits));
+  // Eight bytes at a time, set bits only: a message usually carries few of the block's triangles
+  // (at 1024 nodes, most carry none). Bit i of the mask is bit i % 8 of byte i / 8.
+  for (std::size_t at = 0; at < bytes; at += 8) {
+    const std::size_t len = std::min<std::size_t>(8, bytes - at);
+    std::uint64_t word = 0;
+    if constexpr (std::endian::native == std::endian::little) {
+      std::memcpy(&word, mask + at, len);
+    } else {
+      for (std::size_t j = 0; j < len; ++j)
+        word |= std::uint64_t(mask[at + j]) << (8 * j);
+    }
+    for (; word != 0; word &= word - 1) {
+      const std::size_t i = at * 8 + std::size_t(std::countr_zero(word));
       if (i < n) picked.push_back(std::uint32_t(i));
     }
+  }
   return picked;
 }
 

@@ -49,3 +49,34 @@ TEST(ElasticPartition, AllLoadOnOneRowAndEmptyLoad) {
   auto e = elastic_partition(std::vector<std::int64_t>(64, 0), 4);
   EXPECT_EQ(e, (std::vector<int>{0, 16, 32, 48, 64}));
 }
+
+// The boundaries found in one walk over the rows are those of a binary search per boundary (the
+// rule the walk replaces), with more slices than rows and with empty rows.
+TEST(ElasticPartition, OneWalkFindsTheBinarySearchBoundaries) {
+  const auto searched = [](const std::vector<std::int64_t>& load, int parts) {
+    const int h = int(load.size());
+    std::vector<std::int64_t> cum(std::size_t(h) + 1, 0);
+    for (int y = 0; y < h; ++y)
+      cum[y + 1] = cum[y] + load[y];
+    std::vector<int> b(std::size_t(parts) + 1, 0);
+    b[parts] = h;
+    for (int k = 1; k < parts; ++k) {
+      const std::int64_t target = std::int64_t(k) * cum[h];
+      auto it = std::lower_bound(cum.begin() + b[k - 1], cum.end(), target,
+                                 [&](std::int64_t c, std::int64_t t) { return c * parts < t; });
+      int y = int(it - cum.begin());
+      if (y > b[k - 1] &&
+          std::llabs(cum[y - 1] * parts - target) <= std::llabs(cum[y] * parts - target))
+        --y;
+      b[k] = std::min(y, h);
+    }
+    return b;
+  };
+  for (int parts : {2, 3, 16, 64, 512, 1024}) {
+    auto rows = bumpy_rows(256, parts);
+    std::vector<std::int64_t> load(rows.begin(), rows.end());
+    for (int y = 0; y < 256; y += 7)
+      load[std::size_t(y)] = 0;
+    EXPECT_EQ(elastic_partition(load, parts), searched(load, parts)) << parts << " slices";
+  }
+}
