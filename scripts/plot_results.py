@@ -9,6 +9,8 @@ usage: plot_results.py [--format png|svg|pdf] [--describe OUT.json] RESULTS_DIR
        --gantt REPORT.json OUT (repeatable) draws that space-time diagram (plot_gantt.py) in the
            same interpreter, and --later calibration draws that part once standard input gives a
            line: `zcube reproduce` draws all its plots with one process, while its calibration runs
+       --arguments-on-stdin: the arguments after --units come as a line of JSON on standard input
+           (zcube reproduce starts the script, which loads matplotlib, before its simulations)
 
 --describe writes what every figure shows (titles, axis labels and scales, legend entries, the
 number of series and of out-of-memory marks) as JSON: the tests read the plots from it.
@@ -626,8 +628,18 @@ def main(argv):
     p.add_argument("--later", action="append", default=[], choices=("calibration",),
                    help="draw this part of RESULTS_DIR only once a line arrives on standard input "
                    "(end of input: not at all)")
+    p.add_argument("--arguments-on-stdin", action="store_true",
+                   help="load the plotting modules first, then read the other arguments from "
+                   "standard input, one line of JSON (a list of strings; end of input: draw "
+                   "nothing): zcube reproduce starts the script before its simulations")
     p.add_argument("results", nargs="?")
     a = p.parse_args(argv)
+    if a.arguments_on_stdin:
+        import plot_gantt  # noqa: F401 (loaded now, while the caller computes)
+        line = sys.stdin.readline()
+        if not line:
+            return
+        a = p.parse_args(argv + json.loads(line))
     FORMAT = a.format
     if a.describe:
         FIGURES = []

@@ -60,10 +60,9 @@ bool run_python_script(const std::string& root, const std::string& script,
   return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
-BackgroundPlots::BackgroundPlots(const std::string& root, const std::vector<std::string>& args) {
+BackgroundPlots::BackgroundPlots(const std::string& root) {
   std::vector<std::string> words = {python_interpreter(), root + "/scripts/plot_results.py",
-                                    "--units", unit_tables()};
-  words.insert(words.end(), args.begin(), args.end());
+                                    "--units", unit_tables(), "--arguments-on-stdin"};
   std::vector<char*> argv;
   for (auto& w : words)
     argv.push_back(w.data());
@@ -87,25 +86,41 @@ BackgroundPlots::~BackgroundPlots() {
   wait();
 }
 
+void BackgroundPlots::draw(const std::vector<std::string>& args) {
+  drawing_ = true;
+  say(nlohmann::json(args).dump() + "\n"); // one line: JSON escapes any newline in an argument
+}
+
 void BackgroundPlots::go() {
+  say("go\n");
   if (to_script_ < 0) return;
-  const char line[] = "go\n";
-  // A script that has already died must not take zcube with it (SIGPIPE): wait() reports it.
-  struct sigaction ignore {}, old{};
-  ignore.sa_handler = SIG_IGN;
-  sigaction(SIGPIPE, &ignore, &old);
-  [[maybe_unused]] const ssize_t n = write(to_script_, line, sizeof line - 1);
-  sigaction(SIGPIPE, &old, nullptr);
   close(to_script_);
   to_script_ = -1;
 }
 
+void BackgroundPlots::say(const std::string& line) {
+  if (to_script_ < 0) return;
+  // A script that has already died must not take zcube with it (SIGPIPE): wait() reports it.
+  struct sigaction ignore {
+  }, old{};
+  ignore.sa_handler = SIG_IGN;
+  sigaction(SIGPIPE, &ignore, &old);
+  for (std::size_t at = 0; at < line.size();) {
+    const ssize_t n = write(to_script_, line.data() + at, line.size() - at);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    at += std::size_t(n);
+  }
+  sigaction(SIGPIPE, &old, nullptr);
+}
+
 bool BackgroundPlots::wait() {
   if (to_script_ >= 0) {
-    close(to_script_); // end of input: the held-back plots are not drawn
+    close(to_script_); // end of input: nothing more is drawn
     to_script_ = -1;
   }
   if (pid_ <= 0) return false;
+  if (!drawing_) kill(pid_, SIGTERM); // (an error before draw(): not worth its start-up)
   int status = 0;
   while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
   }

@@ -20,20 +20,24 @@ bool run_python_script(const std::string& root, const std::string& script,
                        const std::vector<std::string>& args);
 
 // scripts/plot_results.py (with --units, as run_plot_script) started in the background, its
-// standard input a pipe: the caller goes on while it draws, says go() when the plots the script
-// holds back (--later) can be drawn, and wait() tells whether it succeeded (the destructor waits).
+// standard input a pipe: it loads matplotlib while the caller goes on, draws once draw() gives it
+// the rest of its arguments, the plots it holds back (--later) once go() says so, and wait() tells
+// whether it succeeded (the destructor waits; without draw(), the script is stopped).
 class BackgroundPlots {
 public:
-  BackgroundPlots(const std::string& root, const std::vector<std::string>& args);
+  explicit BackgroundPlots(const std::string& root);
   ~BackgroundPlots();
   BackgroundPlots(const BackgroundPlots&) = delete;
   BackgroundPlots& operator=(const BackgroundPlots&) = delete;
+  void draw(const std::vector<std::string>& args);
   void go();
   bool wait();
 
 private:
+  void say(const std::string& line);
   int pid_ = -1;
   int to_script_ = -1;
+  bool drawing_ = false;
 };
 
 } // namespace zc

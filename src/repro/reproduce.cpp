@@ -220,6 +220,16 @@ int reproduce(const ReproduceOptions& o) {
     std::cerr << "reproduce: " << cfgs.size() << " simulations, " << o.jobs << " at a time\n";
   const auto progress = o.verbose && o.write ? progress_printer("reproduce", cfgs.size())
                                              : std::function<void(const BatchProgress&)>{};
+  // One interpreter draws every plot: started now, it loads matplotlib (half a CPU-second) while
+  // the simulations run; it draws the Gantt charts and the tables' plots once they are written,
+  // while the calibration runs, and the calibration's once that is written.
+  std::optional<ScratchDir> plot_dir;
+  std::optional<BackgroundPlots> plots;
+  if (o.plots && o.write) {
+    plot_dir.emplace(std::filesystem::temp_directory_path() /
+                     ("zcube-" + std::to_string(getpid()) + "-plots"));
+    plots.emplace(o.root);
+  }
   auto reps = o.runner ? o.runner(cfgs, o.jobs, progress) : simulate_batch(cfgs, o.jobs, progress);
   if (!o.write) return 0;
 
@@ -253,12 +263,7 @@ int reproduce(const ReproduceOptions& o) {
     summaries += p.write(r, dir);
     if (!p.name.empty()) name_plots_in(dir + "/README.md", o.plot_format);
   }
-  // One interpreter draws every plot while the calibration runs: the Gantt charts and the tables'
-  // plots at once, the calibration's once it is written.
-  const ScratchDir plot_dir(std::filesystem::temp_directory_path() /
-                            ("zcube-" + std::to_string(getpid()) + "-plots"));
-  std::optional<BackgroundPlots> plots;
-  if (o.plots) plots.emplace(o.root, plot_arguments(charts, o, plot_dir));
+  if (plots) plots->draw(plot_arguments(charts, o, *plot_dir));
   // The reports are written: freed before the calibration forks its runs (a fork copies the page
   // tables of the memory its parent holds).
   const std::size_t chart_count = charts.size();
