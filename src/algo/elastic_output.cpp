@@ -50,7 +50,9 @@ void output_picture(NodeContext& ctx, Framebuffer slice,
   // --output gather: the slice's colours (one contiguous array, sent in place) go to node 0, which
   // displays them; the picture and its depth map are the slices themselves, handed over once sent
   // (node 0's colours are theirs, byte for byte).
-  if (out.gather) (void)compositing::gather(ctx.comm(), 0, uncharged(slice.rgb()));
+  if (out.gather)
+    (void)compositing::gather(ctx.comm(), 0,
+                              uncharged(Bytes(slice.rgb().begin(), slice.rgb().end())));
   const RowSet rows = slice.rows();
   std::int64_t work = 0;
   for (int y = rows.begin; y < rows.end; ++y)

@@ -123,14 +123,18 @@ ActivePixels Dense::final_pixels(Counters& w) {
   a.y1 = int(held_.size());
   a.row_begin.assign(held_.size() + 1, 0);
   std::size_t rows = 0;
+  const float* depth = full_.depth_data();
+  const std::uint32_t* ids = full_.ids_data();
+  const std::uint8_t* rgb = full_.rgb_data();
   for (int y = a.y0; y < a.y1; ++y) {
     if (held_[y]) {
       ++rows;
-      for (int x = 0; x < a.width; ++x) {
+      // A row the host never touched is background: no covered location (the model still scans it).
+      for (int x = 0; x < a.width && !full_.untouched(y); ++x) {
         const std::size_t i = full_.index(x, y);
-        if (full_.ids()[i] == kNoTriangle) continue;
-        WinningPixel p{full_.depth()[i], full_.ids()[i], std::uint16_t(x), {}};
-        std::memcpy(p.rgb, &full_.rgb()[3 * i], 3);
+        if (ids[i] == kNoTriangle) continue;
+        WinningPixel p{depth[i], ids[i], std::uint16_t(x), {}};
+        std::memcpy(p.rgb, &rgb[3 * i], 3);
         a.pixels.push_back(p);
       }
     }

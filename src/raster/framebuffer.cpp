@@ -17,49 +17,90 @@ Framebuffer::Framebuffer(int width, RowSet rows, glm::vec3 background)
   clear(background);
 }
 
+Framebuffer::Framebuffer(const Framebuffer& o)
+    : width_(o.width_), rows_(o.rows_), rgb_(o.rgb_.size()), depth_(o.depth_.size()),
+      ids_(o.ids_.size()), stale_(o.stale_.size(), 1), stale_rows_(int(o.stale_.size())),
+      recent_(o.recent_) {
+  std::memcpy(bg_, o.bg_, 3);
+  for (int r = 0; r < int(stale_.size()); ++r)
+    if (!o.stale_[std::size_t(r)]) copy_row(o, r, r);
+}
+
+Framebuffer& Framebuffer::operator=(const Framebuffer& o) {
+  if (this != &o) *this = Framebuffer(o);
+  return *this;
+}
+
 void Framebuffer::clear(glm::vec3 background) {
   const std::size_t n = std::size_t(width_) * std::size_t(rows_.count());
   recent_.reset(n);
-  depth_.assign(n, std::numeric_limits<float>::infinity());
-  ids_.assign(n, kNoTriangle);
-  const std::uint8_t bg[3] = {to_byte(background.x), to_byte(background.y), to_byte(background.z)};
-  if (bg[0] == bg[1] && bg[1] == bg[2]) {
-    rgb_.assign(3 * n, bg[0]); // a grey background (black, usually) is one memset
-    return;
-  }
+  // Resized without writing: the rows are filled in as they are touched (ready_row).
+  depth_.resize(n);
+  ids_.resize(n);
   rgb_.resize(3 * n);
-  if (n == 0) return; // a band of zero rows (more nodes than rows) has no first row to copy
-  const std::size_t row = 3 * std::size_t(width_);
-  for (std::size_t i = 0; i < std::size_t(width_); ++i)
-    std::memcpy(&rgb_[3 * i], bg, 3);
-  for (std::size_t r = 1; r < std::size_t(rows_.count()); ++r)
-    std::memcpy(&rgb_[r * row], rgb_.data(), row);
+  bg_[0] = to_byte(background.x);
+  bg_[1] = to_byte(background.y);
+  bg_[2] = to_byte(background.z);
+  stale_.assign(std::size_t(rows_.count()), 1);
+  stale_rows_ = rows_.count();
+}
+
+void Framebuffer::fill_row(int r) const {
+  fill_row(r, bg_);
+}
+
+void Framebuffer::fill_row(int r, const std::uint8_t bg[3]) const {
+  const std::size_t a = std::size_t(r) * width_, b = a + width_;
+  std::fill(depth_.begin() + a, depth_.begin() + b, std::numeric_limits<float>::infinity());
+  std::fill(ids_.begin() + a, ids_.begin() + b, kNoTriangle);
+  if (bg[0] == bg[1] && bg[1] == bg[2]) {
+    std::memset(rgb_.data() + 3 * a, bg[0], 3 * (b - a)); // a grey background (black, usually)
+  } else {
+    for (std::size_t i = a; i < b; ++i)
+      std::memcpy(&rgb_[3 * i], bg, 3);
+  }
+  stale_[std::size_t(r)] = 0;
+}
+
+void Framebuffer::ready_all() const {
+  if (stale_rows_ == 0) return;
+  for (int r = 0; r < int(stale_.size()); ++r)
+    if (stale_[std::size_t(r)]) fill_row(r);
+  stale_rows_ = 0;
+}
+
+void Framebuffer::copy_row(const Framebuffer& from, int from_row, int to_row) {
+  const std::size_t W = std::size_t(width_);
+  const std::size_t src = std::size_t(from_row) * W, dst = std::size_t(to_row) * W;
+  std::memcpy(&depth_[dst], &from.depth_[src], 4 * W);
+  std::memcpy(&ids_[dst], &from.ids_[src], 4 * W);
+  std::memcpy(&rgb_[3 * dst], &from.rgb_[3 * src], 3 * W);
+  stale_[std::size_t(to_row)] = 0;
 }
 
 void Framebuffer::clear_rows(int y0, int y1, glm::vec3 background) {
   const int r0 = rows_.local(rows_.first_from(y0));
   const int r1 = rows_.local(rows_.first_from(std::min(y1, rows_.end)));
-  if (r1 <= r0) return;
-  const std::size_t a = std::size_t(r0) * width_, b = std::size_t(r1) * width_;
-  std::fill(depth_.begin() + a, depth_.begin() + b, std::numeric_limits<float>::infinity());
-  std::fill(ids_.begin() + a, ids_.begin() + b, kNoTriangle);
   const std::uint8_t bg[3] = {to_byte(background.x), to_byte(background.y), to_byte(background.z)};
-  if (bg[0] == bg[1] && bg[1] == bg[2]) {
-    std::memset(rgb_.data() + 3 * a, bg[0], 3 * (b - a));
-    return;
-  }
-  for (std::size_t i = a; i < b; ++i)
-    std::memcpy(&rgb_[3 * i], bg, 3);
+  // Filled now, not left for first touch: threads clear their own bands of one buffer, and the
+  // buffer's background and count of stale rows are not theirs to change.
+  for (int r = r0; r < r1; ++r)
+    fill_row(r, bg);
 }
 
 std::uint64_t Framebuffer::merge(const Framebuffer& o) {
   if (o.width_ != width_ || o.ids_.size() != ids_.size())
     throw std::logic_error("Framebuffer::merge: shapes differ");
   std::uint64_t compares = 0;
-  for (std::size_t i = 0; i < ids_.size(); ++i) {
-    if (o.ids_[i] == kNoTriangle) continue;
-    ++compares;
-    test_and_write(i, o.depth_[i], o.ids_[i], &o.rgb_[3 * i]);
+  const std::size_t W = std::size_t(width_);
+  for (int r = 0; r < int(stale_.size()); ++r) {
+    if (o.stale_[std::size_t(r)]) continue; // all background: nothing covered to compare
+    ready_local(r);
+    for (std::size_t i = std::size_t(r) * W; i < std::size_t(r + 1) * W; ++i) {
+      if (o.ids_[i] == kNoTriangle) continue;
+      ++compares;
+      test_and_write(i, o.depth_[i], o.ids_[i], &o.rgb_[3 * i]);
+    }
   }
   return compares;
 }
@@ -68,15 +109,44 @@ std::vector<std::uint8_t> Framebuffer::pack_locations(std::size_t first, std::si
   // Appended, not cleared then overwritten: a band of a large picture is a hundred megabytes.
   std::vector<std::uint8_t> out;
   out.reserve(kLocationBytes * n);
-  const auto append = [&out](const void* from, std::size_t bytes) {
-    const auto* p = static_cast<const std::uint8_t*>(from);
-    out.insert(out.end(), p, p + bytes);
+  // Each plane run by run: a row not touched yet is sent as its background, without filling it
+  // in here.
+  const std::size_t W = std::size_t(width_), end = first + n;
+  const auto append = [&](const void* plane, std::size_t size, const void* background) {
+    const auto* p = static_cast<const std::uint8_t*>(plane);
+    const auto* bg = static_cast<const std::uint8_t*>(background);
+    for (std::size_t i = first; i < end;) {
+      const std::size_t r = i / W, to = std::min(end, (r + 1) * W);
+      if (!stale_[r]) {
+        out.insert(out.end(), p + size * i, p + size * to);
+      } else if (bg[0] == bg[1] && bg[1] == bg[2] && (size < 4 || bg[2] == bg[3])) {
+        out.insert(out.end(), size * (to - i), bg[0]);
+      } else {
+        const std::size_t at = out.size();
+        out.resize(at + size * (to - i));
+        for (std::size_t k = at; k < out.size(); k += size)
+          std::memcpy(&out[k], bg, size);
+      }
+      i = to;
+    }
   };
-  append(rgb_.data() + 3 * first, 3 * n);
-  append(depth_.data() + first, 4 * n);
-  append(ids_.data() + first, 4 * n);
+  const float inf = std::numeric_limits<float>::infinity();
+  append(rgb_.data(), 3, bg_);
+  append(depth_.data(), 4, &inf);
+  append(ids_.data(), 4, &kNoTriangle);
   return out;
 }
+
+namespace {
+
+// True when the n locations of a message run at `ids` (unaligned 4-byte ids) are all uncovered.
+bool all_uncovered(const std::uint8_t* ids, std::size_t n) {
+  for (std::size_t k = 0; k < 4 * n; ++k)
+    if (ids[k] != 0xff) return false;
+  return true;
+}
+
+} // namespace
 
 std::size_t Framebuffer::merge_locations(const std::uint8_t* msg, std::size_t size,
                                          std::size_t first) {
@@ -86,12 +156,23 @@ std::size_t Framebuffer::merge_locations(const std::uint8_t* msg, std::size_t si
   // Depths and ids read in place (unaligned loads), not copied out into arrays of their own first.
   const std::uint8_t* zs = msg + 3 * n;
   const std::uint8_t* ids = msg + 7 * n;
-  for (std::size_t k = 0; k < n; ++k) {
-    float z;
-    std::uint32_t id;
-    std::memcpy(&z, zs + 4 * k, 4);
-    std::memcpy(&id, ids + 4 * k, 4);
-    test_and_write(first + k, z, id, msg + 3 * k);
+  const std::size_t W = std::size_t(width_);
+  for (std::size_t k = 0; k < n;) {
+    // Row by row: an uncovered location never wins (in_front against the background is false),
+    // so a row not touched yet stays untouched when the message's part of it covers nothing.
+    const std::size_t r = (first + k) / W, to = std::min(n, (r + 1) * W - first);
+    if (stale_[r] && all_uncovered(ids + 4 * k, to - k)) {
+      k = to;
+      continue;
+    }
+    ready_local(int(r));
+    for (; k < to; ++k) {
+      float z;
+      std::uint32_t id;
+      std::memcpy(&z, zs + 4 * k, 4);
+      std::memcpy(&id, ids + 4 * k, 4);
+      test_and_write(first + k, z, id, msg + 3 * k);
+    }
   }
   return n;
 }
@@ -100,21 +181,24 @@ void Framebuffer::paste(const Framebuffer& part) {
   const RowSet& pr = part.rows();
   for (int y = pr.begin; y < pr.end; y += pr.stride) {
     if (!rows_.contains(y)) continue;
-    const std::size_t src = std::size_t(pr.local(y)) * width_;
-    const std::size_t dst = std::size_t(rows_.local(y)) * width_;
-    for (int x = 0; x < width_; ++x) {
-      depth_[dst + x] = part.depth_[src + x];
-      ids_[dst + x] = part.ids_[src + x];
-      for (int k = 0; k < 3; ++k)
-        rgb_[3 * (dst + x) + k] = part.rgb_[3 * (src + x) + k];
+    const int from = pr.local(y), to = rows_.local(y);
+    if (part.stale_[std::size_t(from)] && std::memcmp(part.bg_, bg_, 3) == 0) {
+      stale_[std::size_t(to)] = 1; // the same background, still to be filled in
+      ++stale_rows_;
+      continue;
     }
+    part.ready_local_const(from);
+    copy_row(part, from, to);
   }
 }
 
 std::uint64_t Framebuffer::covered() const {
   std::uint64_t n = 0;
-  for (auto id : ids_)
-    n += id != kNoTriangle;
+  const std::size_t W = std::size_t(width_);
+  for (std::size_t r = 0; r < stale_.size(); ++r)
+    if (!stale_[r])
+      for (std::size_t i = r * W; i < (r + 1) * W; ++i)
+        n += ids_[i] != kNoTriangle;
   return n;
 }
 

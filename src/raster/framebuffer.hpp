@@ -5,6 +5,8 @@
 // final image independent of submission order and of any partition of the work.
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -38,13 +40,33 @@ inline bool in_front(float z, std::uint32_t id, float zs, std::uint32_t ids) {
   return z < zs || (z == zs && id < ids);
 }
 
+// Storage whose resize leaves new elements uninitialised: a frame buffer's rows get their
+// background on first touch (Framebuffer::ready_row), so a new buffer's pages are touched, and
+// faulted in by the host, only where something is drawn, merged or read.
+template <class T> struct NoInitAllocator : std::allocator<T> {
+  template <class U> struct rebind { using other = NoInitAllocator<U>; };
+  NoInitAllocator() = default;
+  template <class U> NoInitAllocator(const NoInitAllocator<U>&) noexcept {}
+  template <class U> void construct(U* p) noexcept { ::new (static_cast<void*>(p)) U; }
+  template <class U, class... A> void construct(U* p, A&&... a) {
+    ::new (static_cast<void*>(p)) U(std::forward<A>(a)...);
+  }
+};
+template <class T> using Plane = std::vector<T, NoInitAllocator<T>>;
+
 class Framebuffer {
 public:
   Framebuffer() = default;
   Framebuffer(int width, RowSet rows, glm::vec3 background);
+  // A copy holds the same pixels; the rows not yet touched stay untouched in the copy.
+  Framebuffer(const Framebuffer& o);
+  Framebuffer& operator=(const Framebuffer& o);
+  Framebuffer(Framebuffer&&) noexcept = default;
+  Framebuffer& operator=(Framebuffer&&) noexcept = default;
 
   // Back to the background, keeping the memory (a renderer drawing many frames pays no page
-  // faults for a new buffer each time).
+  // faults for a new buffer each time). Lazy: each row is filled with the background when first
+  // touched, so a buffer of which a node draws a few rows costs the host only those rows.
   void clear(glm::vec3 background);
   // The same for rows [y0, y1) of the set only (buffer already sized): threads clearing their own
   // bands.
@@ -54,7 +76,15 @@ public:
   const RowSet& rows() const { return rows_; }
   std::size_t index(int x, int y) const { return std::size_t(rows_.local(y)) * width_ + x; }
 
-  // Plain z-buffer write; returns true when the fragment won.
+  // Gives row y (a row of the set) its background if it has not been touched yet. Every writer by
+  // index (test_and_write, the *_data() pointers) readies the row first; rows of different
+  // threads are independent.
+  void ready_row(int y) { ready_local(rows_.local(y)); }
+  void ready_local(int r) {
+    if (stale_[std::size_t(r)]) fill_row(r);
+  }
+
+  // Plain z-buffer write into a ready row; returns true when the fragment won.
   bool test_and_write(std::size_t i, float z, std::uint32_t id, const std::uint8_t rgb[3]) {
     if (!in_front(z, id, depth_[i], ids_[i])) return false;
     depth_[i] = z;
@@ -88,21 +118,45 @@ public:
   std::size_t pixel_count() const { return ids_.size(); }
   std::size_t bytes() const { return ids_.size() * kLocationBytes; }
 
-  std::vector<std::uint8_t>& rgb() { return rgb_; }
-  const std::vector<std::uint8_t>& rgb() const { return rgb_; }
-  std::vector<float>& depth() { return depth_; }
-  const std::vector<float>& depth() const { return depth_; }
-  std::vector<std::uint32_t>& ids() { return ids_; }
-  const std::vector<std::uint32_t>& ids() const { return ids_; }
+  // The whole planes, every row readied first (the rows not touched yet get their background).
+  Plane<std::uint8_t>& rgb() { return ready_all(), rgb_; }
+  const Plane<std::uint8_t>& rgb() const { return ready_all(), rgb_; }
+  Plane<float>& depth() { return ready_all(), depth_; }
+  const Plane<float>& depth() const { return ready_all(), depth_; }
+  Plane<std::uint32_t>& ids() { return ready_all(), ids_; }
+  const Plane<std::uint32_t>& ids() const { return ready_all(), ids_; }
+  // The planes as they are, for writers that ready each row they touch (the z-buffer's spans) and
+  // readers that skip the untouched rows.
+  float* depth_data() { return depth_.data(); }
+  std::uint32_t* ids_data() { return ids_.data(); }
+  std::uint8_t* rgb_data() { return rgb_.data(); }
+  const float* depth_data() const { return depth_.data(); }
+  const std::uint32_t* ids_data() const { return ids_.data(); }
+  const std::uint8_t* rgb_data() const { return rgb_.data(); }
+  // True when row y (a row of the set) has not been touched since the clear: all background.
+  bool untouched(int y) const { return stale_[std::size_t(rows_.local(y))] != 0; }
   // The depth lines the z-buffer entered last (draw_batch's far_lines); clear() resets it.
   RecentLines& recent_lines() { return recent_; }
 
 private:
+  void fill_row(int r) const;
+  void ready_local_const(int r) const {
+    if (stale_[std::size_t(r)]) fill_row(r);
+  }
+  void fill_row(int r, const std::uint8_t bg[3]) const;
+  void ready_all() const;
+  void copy_row(const Framebuffer& from, int from_row, int to_row);
+
   int width_ = 0;
   RowSet rows_;
-  std::vector<std::uint8_t> rgb_;
-  std::vector<float> depth_;
-  std::vector<std::uint32_t> ids_;
+  // The planes and which local rows still await their background: filling them in is not a change
+  // of the pixels, so const readers may do it.
+  mutable Plane<std::uint8_t> rgb_;
+  mutable Plane<float> depth_;
+  mutable Plane<std::uint32_t> ids_;
+  mutable std::vector<std::uint8_t> stale_;
+  mutable int stale_rows_ = 0; // an upper bound: 0 means every row is ready
+  std::uint8_t bg_[3] = {};
   RecentLines recent_;
 };
 

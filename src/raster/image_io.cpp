@@ -15,7 +15,7 @@ void write_png(const Framebuffer& fb, const std::string& path) {
 }
 
 std::vector<float> depth_map(const Framebuffer& fb) {
-  std::vector<float> d(fb.depth());
+  std::vector<float> d(fb.depth().begin(), fb.depth().end());
   for (std::size_t i = 0; i < d.size(); ++i)
     if (fb.ids()[i] == kNoTriangle) d[i] = 1.0f;
   return d;

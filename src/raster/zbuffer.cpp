@@ -244,9 +244,9 @@ bool has_avx2() {
 #endif
 
 FlatSpan flat(const ScreenTriangle& t, const ShadeContext& ctx, Framebuffer& fb) {
-  return {fb.depth().data(),
-          fb.ids().data(),
-          fb.rgb().data(),
+  return {fb.depth_data(),
+          fb.ids_data(),
+          fb.rgb_data(),
           t.z.ax,
           t.r.ax,
           t.g.ax,
@@ -260,6 +260,7 @@ void flat_row(const ScreenTriangle& t, const FlatSpan& s, int y, int x0, int x1,
               std::uint64_t& written, std::uint64_t& first) {
   const double row[4] = {t.z.row(y), t.r.row(y), t.g.row(y), t.b.row(y)};
   const std::size_t i = fb.index(x0, y);
+  fb.ready_row(y);
 #ifdef ZC_FLAT_SPAN_AVX2
   if (has_avx2() && x1 - x0 >= 2) { // shorter spans: the scalar loop measured faster
     flat_span_avx2(s, row, x0, x1, i, written, first);
@@ -274,8 +275,9 @@ void shaded_row(const ScreenTriangle& t, const TriangleBatch& batch, const Shade
                 int x0, int x1, Framebuffer& fb, Counters& c, std::uint64_t* newly_covered) {
   const RowShader rs(t, batch, ctx, y);
   std::size_t i = fb.index(x0, y);
-  auto& depth = fb.depth();
-  auto& ids = fb.ids();
+  fb.ready_row(y);
+  const float* depth = fb.depth_data();
+  const std::uint32_t* ids = fb.ids_data();
   for (int x = x0; x <= x1; ++x, ++i) {
     const float z = rs.depth(x);
     if (!in_front(z, t.id, depth[i], ids[i])) continue;

@@ -13,3 +13,47 @@ TEST(Framebuffer, ZeroRowBandWithColouredBackground) {
   Framebuffer interleaved(8, RowSet::interleaved(3, 4, 2), glm::vec3(0.2f, 0.5f, 1));
   EXPECT_EQ(interleaved.rows().count(), 0);
 }
+
+// Rows are filled with the background on first touch: whatever is read, packed, merged, copied or
+// pasted must be what an eagerly cleared buffer holds.
+TEST(Framebuffer, UntouchedRowsReadAsBackground) {
+  const glm::vec3 bg(0.2f, 0.5f, 1);
+  Framebuffer fb(5, RowSet::band(0, 4), bg);
+  ASSERT_TRUE(fb.untouched(1));
+  fb.ready_row(1);
+  const std::uint8_t red[3] = {255, 0, 0};
+  ASSERT_TRUE(fb.test_and_write(fb.index(2, 1), 0.5f, 7, red));
+  EXPECT_FALSE(fb.untouched(1));
+  EXPECT_TRUE(fb.untouched(2));
+
+  // A copy keeps the untouched rows untouched; reading its planes fills them in.
+  Framebuffer eager = fb;
+  EXPECT_TRUE(eager.untouched(2));
+  ASSERT_EQ(eager.depth().size(), 20u);
+  EXPECT_FALSE(eager.untouched(2));
+  EXPECT_EQ(eager.depth()[0], std::numeric_limits<float>::infinity());
+  EXPECT_EQ(eager.ids()[fb.index(2, 1)], 7u);
+  EXPECT_EQ(eager.rgb()[0], 51);
+  EXPECT_EQ(eager.rgb()[2], 255);
+  EXPECT_EQ(fb.pack_locations(3, 14), eager.pack_locations(3, 14));
+  EXPECT_EQ(fb.covered(), 1u);
+
+  // Merging a message that covers nothing leaves a row untouched; one that covers a pixel fills
+  // the row in first.
+  Framebuffer target(5, RowSet::band(0, 4), bg);
+  target.merge_locations(fb.pack_locations(0, 20), 0);
+  EXPECT_TRUE(target.untouched(0));
+  EXPECT_FALSE(target.untouched(1));
+  EXPECT_EQ(target.rgb(), eager.rgb());
+  EXPECT_EQ(target.depth(), eager.depth());
+  EXPECT_EQ(target.ids(), eager.ids());
+
+  // Pasting and merging whole buffers give the eager results too.
+  Framebuffer pasted(5, RowSet::all(4), bg);
+  pasted.paste(fb);
+  EXPECT_TRUE(pasted.untouched(3));
+  EXPECT_EQ(pasted.rgb(), eager.rgb());
+  Framebuffer merged(5, RowSet::all(4), bg);
+  EXPECT_EQ(merged.merge(fb), 1u);
+  EXPECT_EQ(merged.ids(), eager.ids());
+}
