@@ -446,17 +446,22 @@ def fidelity(d):
     models = {"analytic": ("o", "#1f77b4", -0.17), "flow": ("s", "#d95f02", 0.17)}
     fig, ax = subplots(figsize=(8.5, 0.42 * len(runs) + 1.6))
     ax.axvline(0, color="black", lw=1.2, label="circuit (the reference)")
+    points = []  # (model, error %, y) of each run
     for r in fr:
-        if r["fidelity"] not in models or number(r["rel_error"]) is None:
-            continue
-        marker, colour, dy = models[r["fidelity"]]
-        e = number(r["rel_error"]) * 100
-        y = runs.index(r["run"]) + dy
-        ax.scatter(e, y, s=34, marker=marker, color=colour, zorder=3)
+        if r["fidelity"] in models and number(r["rel_error"]) is not None:
+            points.append((r["fidelity"], number(r["rel_error"]) * 100,
+                           runs.index(r["run"]) + models[r["fidelity"]][2]))
+    # One scatter per model (a scatter each cost more than drawing them), under the labels.
+    for f, (marker, colour, _) in models.items():
+        mine = [(e, y) for g, e, y in points if g == f]
+        if mine:
+            ax.scatter([e for e, _ in mine], [y for _, y in mine], s=34, marker=marker,
+                       color=colour, zorder=3)
+    for f, e, y in points:
         if abs(e) >= 0.05:
             ax.annotate(f"{e:+.2f}%", (e, y), xytext=(6 if e >= 0 else -6, 0),
                         textcoords="offset points", va="center", fontsize=7.5,
-                        ha="left" if e >= 0 else "right", color=colour)
+                        ha="left" if e >= 0 else "right", color=models[f][1])
     ax.set_yticks(range(len(runs)))
     ax.set_yticklabels([run_label(r) for r in runs], fontsize=8.5)
     ax.invert_yaxis()
