@@ -34,12 +34,14 @@ public:
   Blocks recv_blocks(int src, int tag, int* from) override;
   double now() const override { return delivery_.now(); }
   Delivery& delivery() const { return delivery_; }
+  // The next message from src (or kAnySource) with this tag, taken as the receives above take it
+  // (a replay drops its dummy payload: sim/replay.hpp).
+  TransitPtr take(int src, int tag, int* from);
 
 private:
   void check_rank(int r, const char* what) const;
   SendHandle post(int dst, int tag, Message m, std::size_t payload_bytes, Blocks blocks,
                   bool bundle);
-  TransitPtr take(int src, int tag, int* from);
 
   int rank_, nodes_;
   Topology topology_;

@@ -1,0 +1,31 @@
+#pragma once
+// Record and replay on the simulator (docs/architecture.md, "Record and replay"): a run recorded
+// once (run/call_trace.hpp) is replayed under other CPU costs, another network, fidelity or node
+// memory by the same SimContext and SimComm that run the algorithms, executing the recorded calls
+// with dummy payloads of the recorded sizes; the report is the one a full run would write. A
+// replay that the trace cannot reproduce (a receive from any source that gets another source, a
+// node out of memory with sends in flight, another node count or topology) is abandoned: the
+// caller runs the point in full.
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "run/call_trace.hpp"
+#include "run/config.hpp"
+
+namespace zc {
+
+// A full run (run_simulation) that records its calls into `trace`; `trace` is reset when the run
+// cannot be replayed (it failed, or a node read the clock).
+SimResult record_simulation(const SimConfig& cfg, const Scene* preloaded,
+                            std::shared_ptr<CallTrace>& trace);
+
+// The result of `cfg` by replaying `trace` (recorded from a run of the same algorithm, options,
+// scene, size, frames, node count and topology); nullopt, and `why`, when the replay diverged.
+// Like run_simulation, once per process. The images are not made: the image section is the
+// recorded run's.
+std::optional<SimResult> replay_simulation(const SimConfig& cfg, const Scene* preloaded,
+                                           std::shared_ptr<const CallTrace> trace,
+                                           std::string* why = nullptr);
+
+} // namespace zc
