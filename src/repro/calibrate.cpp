@@ -52,7 +52,7 @@ private:
 
 std::vector<nlohmann::json> run_all(const std::vector<SimConfig>& cfgs,
                                     const CalibrationOptions& o) {
-  auto reps = simulate_batch(cfgs, o.jobs);
+  auto reps = simulate_batch(cfgs, o.jobs, {}, true); // its later steps replay the first's
   for (std::size_t i = 0; i < reps.size(); ++i)
     if (reps[i].value("status", "") != "ok")
       throw std::runtime_error("calibration run " + cfgs[i].algorithm + " on " +

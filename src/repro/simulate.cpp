@@ -3,6 +3,8 @@
 #include <malloc.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <iostream>
 #include <map>
 #include <memory>
 #include <set>
@@ -13,6 +15,7 @@
 #include "repro/paper_figures.hpp"
 #include "run/report.hpp"
 #include "scene/load.hpp"
+#include "sim/replay.hpp"
 #include "sim/simulation.hpp"
 
 namespace zc {
@@ -198,26 +201,101 @@ void set_batch_simgrid_args(std::vector<std::string> args) {
   batch_simgrid_args() = std::move(args);
 }
 
-nlohmann::json simulate_point(const SimConfig& cfg) {
+namespace {
+
+const Scene* batch_scene(const SimConfig& cfg) {
   const auto& cache = scene_cache();
   const auto it = cfg.scene_path.empty() ? cache.end() : cache.find(scene_key(cfg));
-  const Scene* scene = it == cache.end() ? nullptr : it->second.get();
+  return it == cache.end() ? nullptr : it->second.get();
+}
+
+// The point with this process's batch SimGrid settings after its own.
+SimConfig with_batch_args(const SimConfig& cfg) {
+  SimConfig c = cfg;
   const auto& extra = batch_simgrid_args();
-  SimResult r;
-  if (extra.empty()) {
-    r = run_simulation(cfg, scene);
-  } else {
-    SimConfig c = cfg;
-    c.simgrid_args.insert(c.simgrid_args.end(), extra.begin(), extra.end());
-    r = run_simulation(c, scene);
-  }
+  c.simgrid_args.insert(c.simgrid_args.end(), extra.begin(), extra.end());
+  return c;
+}
+
+// What a node program's calls depend on (run/call_trace.hpp): not the machine, its what-ifs or
+// the fidelity. The node count and topology a platform file gives are checked by the replay. A
+// point that draws a timeline runs in full (its report is the full run's in any case).
+std::string replay_key(const SimConfig& c) {
+  if (c.custom || c.timeline) return "";
+  return nlohmann::json{{"algorithm", c.algorithm},
+                        {"options", c.options.values},
+                        {"frames", c.options.frames},
+                        {"scene", c.scene_path},
+                        {"width", c.width},
+                        {"height", c.height},
+                        {"nodes", c.nodes},
+                        {"topology", topology_name(c.topology)},
+                        {"compare", c.compare_with_sequential}}
+      .dump();
+}
+
+nlohmann::json record_point(const SimConfig& cfg, std::vector<std::uint8_t>* trace) {
+  if (!trace) return simulate_point(cfg);
+  std::shared_ptr<CallTrace> t;
+  SimResult r = record_simulation(with_batch_args(cfg), batch_scene(cfg), t);
+  if (t) *trace = t->serialize();
+  attach_paper_figures(r.report);
+  return r.report;
+}
+
+std::optional<nlohmann::json> replay_point(const SimConfig& cfg,
+                                           const std::vector<std::uint8_t>& trace) {
+  auto t = std::make_shared<const CallTrace>(CallTrace::parse(trace));
+  std::optional<SimResult> r = replay_simulation(with_batch_args(cfg), batch_scene(cfg), t);
+  if (!r) return std::nullopt;
+  attach_paper_figures(r->report);
+  return std::move(r->report);
+}
+
+// Record and replay is on unless ZCUBE_REPLAY=0 (every point then runs in full, as a check).
+bool replay_enabled() {
+  const char* v = std::getenv("ZCUBE_REPLAY");
+  return !v || std::string(v) != "0";
+}
+
+std::vector<nlohmann::json>
+replaying_batch(const std::vector<SimConfig>& points, int jobs,
+                const std::function<void(const BatchProgress&)>& progress, bool keep) {
+  static TraceStore traces; // the kept ones
+  std::map<std::string, int> uses;
+  for (const auto& p : points)
+    ++uses[replay_key(p)];
+  // A recording nobody replays costs its trace: only the keys two points share record, unless
+  // the traces are kept for later batches.
+  const auto key = [&uses, keep](const SimConfig& c) {
+    std::string k = replay_key(c);
+    return keep || traces.contains(k) || uses[k] >= 2 ? k : std::string();
+  };
+  TraceStore fresh;
+  TraceStore& store = keep ? traces : fresh;
+  if (!keep)
+    for (const auto& [k, n] : uses)
+      if (const auto it = traces.find(k); it != traces.end()) fresh.insert(*it);
+  ReplayCounts counts;
+  auto reports = run_batch_replaying(points, jobs, {key, record_point, replay_point}, store,
+                                     progress, &counts);
+  if (std::getenv("ZCUBE_REPLAY_STATS"))
+    std::cerr << "replay: " << counts.full << " full, " << counts.recorded << " recorded, "
+              << counts.replayed << " replayed, " << counts.diverged << " diverged\n";
+  return reports;
+}
+
+} // namespace
+
+nlohmann::json simulate_point(const SimConfig& cfg) {
+  SimResult r = run_simulation(with_batch_args(cfg), batch_scene(cfg));
   attach_paper_figures(r.report);
   return r.report;
 }
 
 std::vector<nlohmann::json>
 simulate_batch(const std::vector<SimConfig>& points, int jobs,
-               const std::function<void(const BatchProgress&)>& progress) {
+               const std::function<void(const BatchProgress&)>& progress, bool keep_traces) {
   drop_unused_scenes(points);
   preload_scenes(points, jobs);
   prepare_references(points, jobs);
@@ -228,7 +306,9 @@ simulate_batch(const std::vector<SimConfig>& points, int jobs,
   // The parent's free heap handed back: each fork then copies fewer page-table entries, and a
   // simulation's allocations in it take fresh pages instead of copies of the parent's.
   malloc_trim(0);
-  auto ran = run_batch(sorted, jobs, simulate_point, progress);
+  std::vector<nlohmann::json> ran = replay_enabled()
+                                        ? replaying_batch(sorted, jobs, progress, keep_traces)
+                                        : run_batch(sorted, jobs, simulate_point, progress);
   std::vector<nlohmann::json> reports(points.size());
   for (std::size_t k = 0; k < order.size(); ++k)
     reports[order[k]] = std::move(ran[k]);

@@ -20,9 +20,13 @@ void set_batch_simgrid_args(std::vector<std::string> args);
 // One simulation's report, paper figures attached: the point runner of zcube's batches.
 nlohmann::json simulate_point(const SimConfig& cfg);
 
-// run_batch with simulate_point.
+// run_batch with simulate_point, recording and replaying (docs/architecture.md, "Record and
+// replay") the points that differ only in their machine. `keep_traces`: the recordings are kept
+// for the process's later batches (the calibration's steps), and every point records; otherwise
+// only the points another of the batch can replay record.
 std::vector<nlohmann::json>
 simulate_batch(const std::vector<SimConfig>& points, int jobs,
-               const std::function<void(const BatchProgress&)>& progress = {});
+               const std::function<void(const BatchProgress&)>& progress = {},
+               bool keep_traces = false);
 
 } // namespace zc

@@ -9,6 +9,10 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <deque>
+#include <functional>
+#include <optional>
+#include <set>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -19,19 +23,35 @@ namespace zc {
 
 namespace {
 
+// A point's work in its child process: what it writes back to the parent.
+struct Job {
+  std::size_t index = 0;
+  std::function<std::string()> work;
+  int mode = 0; // the caller's (run_batch_replaying: full, record or replay)
+};
+
 struct Child {
   pid_t pid = -1;
   int fd = -1;
-  std::size_t index = 0;
+  Job job;
   std::string out;
 };
 
-// In the child: run, write the report (or the error) to fd, exit without running the parent's
-// atexit handlers or flushing its buffers twice.
-[[noreturn]] void child_main(const PointRunner& run_point, const SimConfig& cfg, int fd) {
+// A point's report, or the error, as text for the pipe.
+std::string report_text(const std::function<nlohmann::json()>& run) {
+  try {
+    return run().dump();
+  } catch (const std::exception& ex) {
+    return nlohmann::json{{"status", "error"}, {"error", ex.what()}}.dump();
+  }
+}
+
+// In the child: run, write the output to fd, exit without running the parent's atexit handlers
+// or flushing its buffers twice.
+[[noreturn]] void child_main(const Job& job, int fd) {
   std::string out;
   try {
-    out = run_point(cfg).dump();
+    out = job.work();
   } catch (const std::exception& ex) {
     out = nlohmann::json{{"status", "error"}, {"error", ex.what()}}.dump();
   }
@@ -45,14 +65,15 @@ struct Child {
   _exit(0);
 }
 
-nlohmann::json finish(Child& c) {
+// The child's report (the text up to `end`), or why it gave none.
+nlohmann::json finish(Child& c, std::size_t end = std::string::npos) {
   close(c.fd);
   int status = 0;
   while (waitpid(c.pid, &status, 0) < 0 && errno == EINTR) {
   }
   if (!c.out.empty()) {
     try {
-      return nlohmann::json::parse(c.out);
+      return nlohmann::json::parse(c.out.substr(0, end));
     } catch (const std::exception&) {
     }
   }
@@ -112,20 +133,23 @@ int default_jobs() {
   return std::max(1, int(std::thread::hardware_concurrency()));
 }
 
-std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int jobs,
-                                      const PointRunner& run_point,
-                                      const std::function<void(const BatchProgress&)>& progress) {
-  std::vector<nlohmann::json> reports(points.size());
+namespace {
+
+// The next job to start (nullopt: none can start now), and what to do with a finished child.
+using NextJob = std::function<std::optional<Job>()>;
+using JobDone = std::function<void(Child&)>;
+
+// Forks up to `jobs` children at a time until no job is left to start and none runs.
+void run_jobs(int jobs, const NextJob& next, const JobDone& done) {
   std::vector<Child> running;
-  BatchProgress pr;
-  pr.total = points.size();
-  std::size_t next = 0;
   jobs = std::max(1, jobs);
   g_stop_signal = 0;
   const StopSignals stop_signals;
-  while (next < points.size() || !running.empty()) {
+  for (;;) {
     if (g_stop_signal) stop_batch(running);
-    while (next < points.size() && int(running.size()) < jobs) {
+    while (int(running.size()) < jobs) {
+      std::optional<Job> job = next();
+      if (!job) break;
       const pid_t parent = getpid();
       const PipedChild child = fork_with_pipe();
       if (child.pid == 0) {
@@ -135,11 +159,11 @@ std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int 
         if (getppid() != parent) _exit(1); // the parent died before prctl
         for (const Child& c : running)
           close(c.fd);
-        child_main(run_point, points[next], child.fd);
+        child_main(*job, child.fd);
       }
-      running.push_back({child.pid, child.fd, next, {}});
-      ++next;
+      running.push_back({child.pid, child.fd, std::move(*job), {}});
     }
+    if (running.empty()) return;
     std::vector<pollfd> pfd;
     for (const Child& c : running)
       pfd.push_back({c.fd, POLLIN, 0});
@@ -156,14 +180,163 @@ std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int 
         continue;
       }
       if (n < 0 && errno == EINTR) continue;
-      nlohmann::json rep = finish(running[i]);
-      if (rep.value("status", "error") == "error") ++pr.failed;
-      reports[running[i].index] = std::move(rep);
+      Child c = std::move(running[i]);
       running.erase(running.begin() + std::ptrdiff_t(i));
-      ++pr.done;
-      if (progress) progress(pr);
+      done(c);
     }
   }
+}
+
+} // namespace
+
+std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int jobs,
+                                      const PointRunner& run_point,
+                                      const std::function<void(const BatchProgress&)>& progress) {
+  std::vector<nlohmann::json> reports(points.size());
+  BatchProgress pr;
+  pr.total = points.size();
+  std::size_t next = 0;
+  const NextJob next_job = [&]() -> std::optional<Job> {
+    if (next == points.size()) return std::nullopt;
+    const SimConfig& cfg = points[next];
+    return Job{next++, [&run_point, &cfg] { return report_text([&] { return run_point(cfg); }); }};
+  };
+  run_jobs(jobs, next_job, [&](Child& c) {
+    nlohmann::json rep = finish(c);
+    if (rep.value("status", "error") == "error") ++pr.failed;
+    reports[c.job.index] = std::move(rep);
+    ++pr.done;
+    if (progress) progress(pr);
+  });
+  return reports;
+}
+
+namespace {
+
+enum Mode { kFull, kRecord, kReplay };
+constexpr const char* kDiverged = "zcube_replay_diverged";
+
+// run_batch_replaying's bookkeeping in the parent: which points are left, which keys are being
+// recorded, and what the finished children sent back.
+class ReplaySchedule {
+public:
+  ReplaySchedule(const std::vector<SimConfig>& points, const ReplayRunner& runner,
+                 TraceStore& traces)
+      : points_(points), runner_(runner), traces_(traces) {
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      keys_.push_back(runner.key(points[i]));
+      pending_.push_back({i, false});
+    }
+  }
+
+  // The first pending point that can start: a replay when its key's trace is here, the recording
+  // when nobody records its key yet, else a full run (no key, no trace possible, or diverged).
+  std::optional<Job> next(bool idle) {
+    for (auto it = pending_.begin(); it != pending_.end(); ++it) {
+      const auto [i, full] = *it;
+      const std::string& k = keys_[i];
+      Mode m = kFull;
+      if (!full && !k.empty() && !unreplayable_.contains(k)) {
+        if (traces_.contains(k))
+          m = kReplay;
+        else if (!recording_.contains(k))
+          m = kRecord;
+        else if (!idle)
+          continue; // its key's recording runs: wait for its trace
+      }
+      pending_.erase(it);
+      if (m == kRecord) recording_.insert(k);
+      return job(i, m);
+    }
+    return std::nullopt;
+  }
+
+  // A finished child: its report, or (a diverged replay) the point back in the queue for a full
+  // run. Returns whether the point is done.
+  bool done(Child& c, nlohmann::json& report) {
+    const std::string& k = keys_[c.job.index];
+    if (c.job.mode == kRecord) {
+      recording_.erase(k);
+      const std::size_t end = c.out.find('\0');
+      report = finish(c, end);
+      if (end != std::string::npos)
+        traces_[k].assign(c.out.begin() + std::ptrdiff_t(end) + 1, c.out.end());
+      else if (report.value("status", "") == "ok")
+        unreplayable_.insert(k); // it ran well and left no trace: it read the clock
+      ++counts.recorded;
+      return true;
+    }
+    report = finish(c);
+    if (c.job.mode == kReplay && report.contains(kDiverged)) {
+      ++counts.diverged;
+      pending_.push_front({c.job.index, true});
+      return false;
+    }
+    ++(c.job.mode == kReplay ? counts.replayed : counts.full);
+    return true;
+  }
+
+  ReplayCounts counts;
+
+private:
+  Job job(std::size_t i, Mode m) {
+    const SimConfig& cfg = points_[i];
+    const ReplayRunner& r = runner_;
+    if (m == kRecord)
+      return {i,
+              [&r, &cfg] {
+                std::vector<std::uint8_t> trace;
+                std::string out = report_text([&] { return r.record(cfg, &trace); });
+                if (!trace.empty()) out.append(1, '\0').append(trace.begin(), trace.end());
+                return out;
+              },
+              m};
+    if (m == kReplay)
+      return {i,
+              [&r, &cfg, &trace = traces_.at(keys_[i])] {
+                return report_text([&] {
+                  std::optional<nlohmann::json> rep = r.replay(cfg, trace);
+                  return rep ? std::move(*rep) : nlohmann::json{{kDiverged, true}};
+                });
+              },
+              m};
+    return {i, [&r, &cfg] { return report_text([&] { return r.record(cfg, nullptr); }); }, m};
+  }
+
+  const std::vector<SimConfig>& points_;
+  const ReplayRunner& runner_;
+  TraceStore& traces_;
+  std::vector<std::string> keys_;
+  std::deque<std::pair<std::size_t, bool>> pending_; // the point, and whether to run it in full
+  std::set<std::string> recording_, unreplayable_;
+};
+
+} // namespace
+
+std::vector<nlohmann::json>
+run_batch_replaying(const std::vector<SimConfig>& points, int jobs, const ReplayRunner& runner,
+                    TraceStore& traces, const std::function<void(const BatchProgress&)>& progress,
+                    ReplayCounts* counts) {
+  std::vector<nlohmann::json> reports(points.size());
+  BatchProgress pr;
+  pr.total = points.size();
+  ReplaySchedule schedule(points, runner, traces);
+  std::size_t running = 0;
+  const NextJob next = [&]() -> std::optional<Job> {
+    auto job = schedule.next(running == 0);
+    if (job) ++running;
+    return job;
+  };
+  run_jobs(jobs, next, [&](Child& c) {
+    --running;
+    nlohmann::json rep;
+    if (!schedule.done(c, rep)) return;
+    if (rep.value("status", "error") == "error") ++pr.failed;
+    reports[c.job.index] = std::move(rep);
+    ++pr.done;
+    if (progress) progress(pr);
+  });
+  if (counts) *counts = schedule.counts;
   return reports;
 }
 
