@@ -59,7 +59,7 @@ void Delivery::arrived(Transit& m) {
   notify(waiters_[m.src], m);
 }
 
-TransitPtr Delivery::post(int src, int dst, int tag, Message msg, Blocks blocks, bool bundle) {
+TransitPtr Delivery::post(int src, int dst, int tag, Message&& msg, Blocks&& blocks, bool bundle) {
   TransitPtr m = TransitPtr::make();
   m->src = src;
   m->dst = dst;

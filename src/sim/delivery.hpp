@@ -32,8 +32,9 @@ public:
 
   // Sends at the current virtual time; the message's arrival is set now or later. The network is
   // charged m.charged bytes, whatever the payload's size. A message of several blocks comes as
-  // `blocks` (bundle true), charged m.charged.
-  TransitPtr post(int src, int dst, int tag, Message m, Blocks blocks = {}, bool bundle = false);
+  // `blocks` (bundle true), charged m.charged. Both are moved from.
+  TransitPtr post(int src, int dst, int tag, Message&& m, Blocks&& blocks = {},
+                  bool bundle = false);
   // Blocks rank `self` until message m has arrived (a sender's completion). `now` is the virtual
   // time on entry, and on return.
   void await_arrival(int self, const Transit& m, double& now);

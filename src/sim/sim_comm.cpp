@@ -62,8 +62,8 @@ void SimComm::check_rank(int r, const char* what) const {
                             std::to_string(size()));
 }
 
-SendHandle SimComm::post(int dst, int tag, Message msg, std::size_t payload_bytes, Blocks blocks,
-                         bool bundle) {
+SendHandle SimComm::post(int dst, int tag, Message&& msg, std::size_t payload_bytes,
+                         Blocks&& blocks, bool bundle) {
   check_rank(dst, "send");
   if (charge_payloads_) msg.charged = payload_bytes;
   // NodeStats::count_send, with the current phase's entry remembered between sends.

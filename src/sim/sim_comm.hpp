@@ -40,7 +40,8 @@ public:
 
 private:
   void check_rank(int r, const char* what) const;
-  SendHandle post(int dst, int tag, Message m, std::size_t payload_bytes, Blocks blocks,
+  // By reference: moved on once, into the message's Transit (no moved-from copy a level).
+  SendHandle post(int dst, int tag, Message&& m, std::size_t payload_bytes, Blocks&& blocks,
                   bool bundle);
 
   int rank_, nodes_;

@@ -14,6 +14,25 @@ using simgrid::kernel::timer::Timer;
 namespace {
 constexpr double kNoWakeup = std::numeric_limits<double>::quiet_NaN();
 
+// Stably by order (the rule for parties resumed at one date). A date usually resumes a handful of
+// parties: an insertion sort then, instead of stable_sort's buffer for each date.
+void sort_by_order(std::vector<Wakeups::Sleeper*>& v) {
+  const auto before = [](const Wakeups::Sleeper* a, const Wakeups::Sleeper* b) {
+    return a->order < b->order;
+  };
+  if (v.size() > 32) {
+    std::stable_sort(v.begin(), v.end(), before);
+    return;
+  }
+  for (std::size_t i = 1; i < v.size(); ++i) {
+    Wakeups::Sleeper* s = v[i];
+    std::size_t j = i;
+    for (; j > 0 && before(s, v[j - 1]); --j)
+      v[j] = v[j - 1];
+    v[j] = s;
+  }
+}
+
 // The Wakeups of the simulation this thread runs, whose clock SimGrid's time advances update.
 thread_local Wakeups* clock_owner = nullptr;
 } // namespace
@@ -42,7 +61,13 @@ void Wakeups::set_after(Sleeper& s, double seconds, double reached) {
   s.date = date;
   s.reached = reached;
   auto [it, fresh] = due_.try_emplace(date);
-  if (fresh) it->second.timer = Timer::set(date, [this, date] { fire(date); });
+  if (fresh) {
+    it->second.timer = Timer::set(date, [this, date] { fire(date); });
+    if (!spare_.empty()) { // a list of a date gone, its capacity kept
+      it->second.sleepers = std::move(spare_.back());
+      spare_.pop_back();
+    }
+  }
   it->second.sleepers.push_back(&s); // fire() puts them in order
 }
 
@@ -58,6 +83,7 @@ void Wakeups::unset(Sleeper& s) {
   v.erase(std::find(v.begin(), v.end(), &s));
   if (v.empty()) {
     it->second.timer->remove();
+    keep(std::move(v));
     due_.erase(it);
   }
 }
@@ -80,12 +106,17 @@ void Wakeups::fire(double date) {
       s->date = kNoWakeup;
       resumed.push_back(s);
     }
+    keep(std::move(it->second.sleepers));
     it = due_.erase(it);
   }
-  std::stable_sort(resumed.begin(), resumed.end(),
-                   [](const Sleeper* a, const Sleeper* b) { return a->order < b->order; });
+  sort_by_order(resumed);
   for (Sleeper* s : resumed)
     s->actor->resume();
+}
+
+void Wakeups::keep(std::vector<Sleeper*> list) {
+  list.clear();
+  if (list.capacity() != 0 && spare_.size() < 64) spare_.push_back(std::move(list));
 }
 
 void Wakeups::cancel_all() {

@@ -54,12 +54,15 @@ private:
   };
   void unset(Sleeper& s);
   void fire(double date);
+  // Keeps the list of a date gone (emptied, its capacity kept) for the next new date.
+  void keep(std::vector<Sleeper*> list);
 
   double precision_;
   double now_;
   bool stopped_ = false; // after cancel_all(): no wake-up is set any more
   std::map<double, Due> due_;
-  std::vector<Sleeper*> resumed_; // fire()'s scratch
+  std::vector<Sleeper*> resumed_;            // fire()'s scratch
+  std::vector<std::vector<Sleeper*>> spare_; // lists of dates gone: no allocation per new date
 };
 
 } // namespace zc
