@@ -101,8 +101,7 @@ void BackgroundPlots::go() {
 void BackgroundPlots::say(const std::string& line) {
   if (to_script_ < 0) return;
   // A script that has already died must not take zcube with it (SIGPIPE): wait() reports it.
-  struct sigaction ignore {
-  }, old{};
+  struct sigaction ignore = {}, old = {};
   ignore.sa_handler = SIG_IGN;
   sigaction(SIGPIPE, &ignore, &old);
   for (std::size_t at = 0; at < line.size();) {
