@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
 #include <map>
 #include <set>
@@ -67,12 +68,18 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
   // The CPU twice: rank 0 alone while the others sleep (what a one-node run has: the other cores
   // idle), then every rank at once (a run on several nodes: every core busy, sharing the memory
   // system and the last-level cache).
+  // At once, a block of several groups keeps the split rank 0 found alone (measure_cpu): every rank
+  // gets the alone multipliers.
   nlohmann::json solo_log = nlohmann::json::object();
-  CostTable solo;
+  CpuCosts solo;
   if (rank == 0) solo = measure_cpu(o.root, o.seconds, solo_log);
   sleeping_barrier();
+  std::uint64_t groups = solo.multipliers.size();
+  MPI_Bcast(&groups, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+  solo.multipliers.resize(std::size_t(groups));
+  MPI_Bcast(solo.multipliers.data(), int(groups), MPI_DOUBLE, 0, MPI_COMM_WORLD);
   nlohmann::json cpu_log = nlohmann::json::array();
-  const CostTable mine_cost = measure_cpu(o.root, o.seconds, cpu_log);
+  const CostTable mine_cost = measure_cpu(o.root, o.seconds, cpu_log, solo.multipliers).cost;
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
   const nlohmann::json mine = {{"host", processor_name()},
                                {"cost", cost_json(mine_cost)},
@@ -138,7 +145,7 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
     const Topology topo = (P & (P - 1)) == 0 ? Topology::Cube : Topology::Ring;
     // One node computes alone; several share the machine's cores, memory and cache as the ranks
     // did that timed their loops at once (more nodes than ranks: as many cores busy as ranks).
-    spec.cost = P == 1 ? solo : avg;
+    spec.cost = P == 1 ? solo.cost : avg;
     std::ofstream f(outs[i]);
     f << platform_xml(spec, P, topo);
     if (!f) throw InputError(outs[i], 0, "cannot write the platform file");
@@ -156,7 +163,7 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
             {"ranges", net.ranges},
             {"samples", net.samples}}},
           {"cost", cost_json(avg)},
-          {"cost_alone", cost_json(solo)},
+          {"cost_alone", cost_json(solo.cost)},
           {"cpu_alone", solo_log},
           {"ranks", per_rank},
           {"memory_bytes_per_node", spec.memory_bytes},

@@ -265,6 +265,53 @@ void time_zbuffer_loop(Probe& p, const std::string& what, const Scene& s, const 
       });
 }
 
+// Two nodes of a pair (Kurc et al.'s PAIR at P = 2): the picture's triangles dealt round-robin, as
+// Kurc's distribute deals them, each node's winning pixels over every row. Their lists interleave
+// in the same rows, as a pair's merge finds them (the odd rows of one picture merged into its even
+// rows, as the probe did before, meet empty rows: each row a copy of one list, not a merge).
+struct PairInputs {
+  ActivePixels a, b;
+  ActivePixels a_even, b_even;     // the rows node a keeps, of each node
+  std::vector<int> to_odd;         // node a's routing: its odd rows to node b
+  std::vector<std::uint8_t> b_msg; // node b's even rows on the wire, as node a receives them
+};
+PairInputs pair_inputs(const Scene& s, const NodeRenderer& nr,
+                       const std::vector<ProjectedVertex>& pv, int size) {
+  Counters ignored;
+  TriangleBatch half[2];
+  for (std::size_t i = 0; i < s.triangles.size(); ++i)
+    nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, half[i % 2], ignored);
+  PairInputs in;
+  for (int k = 0; k < 2; ++k) {
+    const SpanLists lists = build_span_lists(half[k], size, size, ignored);
+    (k == 0 ? in.a : in.b) = zbuffer_spans(lists, half[k], nr.shade(), size, ignored);
+  }
+  in.to_odd.assign(static_cast<std::size_t>(size), -1);
+  std::vector<int> to_even(static_cast<std::size_t>(size), -1);
+  for (int y = 0; y < size; ++y)
+    (y % 2 ? in.to_odd : to_even)[std::size_t(y)] = y % 2;
+  in.b_msg = std::move(serialize_sparse_by_owner(in.b, to_even, 2)[0]);
+  in.a_even = select_rows(in.a, [](int y) { return y % 2 == 0; });
+  in.b_even = select_rows(in.b, [](int y) { return y % 2 == 0; });
+  return in;
+}
+
+// A pair's merge of its kept rows with its partner's (the list merge, `merge_active`), and its
+// exchange as zcube makes it (compositing/winning_pixels.cpp): the rows sent converted to wire
+// records, the rows kept copied out, the partner's rows merged into them from the wire. `in` must
+// outlive p.run().
+void time_pair_loops(Probe& p, const std::string& name, const PairInputs& in) {
+  p.time(kListMergeLoops, name,
+         [&in](Counters& c) { (void)merge_active(in.a_even, in.b_even, c); });
+  p.time(kWireLoops, name, [&in](Counters& c) {
+    const auto parts = serialize_sparse_by_owner(in.a, in.to_odd, 2);
+    const ActivePixels keep = select_rows(in.a, [](int y) { return y % 2 == 0; });
+    std::uint64_t got = 0;
+    (void)merge_active_sparse(keep, in.b_msg.data(), in.b_msg.size(), c, got);
+    c.wire_records += in.a.count() + got;
+  });
+}
+
 // The loops of one scene at one size: projection, set-up, the frame-buffer z-buffer (set-up and
 // scan conversion, as elastic's slices and Blazek's nodes run it), Kurc et al.'s span lists and
 // active pixel z-buffer, the load estimate. `kurc`: also the active merge and the output (final
@@ -276,14 +323,12 @@ void render_loops(Probe& p, const Picture& pic, bool kurc) {
   const std::vector<ProjectedVertex> pv = probe_projected_vertices(nr, s);
   Counters ignored;
   // The inputs of the later loops, made once: every triangle set up, the span lists, the active
-  // pixels and their odd and even rows, the frame buffers.
+  // pixels, the frame buffers.
   TriangleBatch all;
   for (std::size_t i = 0; i < s.triangles.size(); ++i)
     nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, all, ignored);
   SpanLists lists = build_span_lists(all, size, size, ignored);
   ActivePixels wpa = zbuffer_spans(lists, all, nr.shade(), size, ignored);
-  const ActivePixels odd = select_rows(wpa, [](int y) { return y % 2; });
-  const ActivePixels even = select_rows(wpa, [](int y) { return y % 2 == 0; });
   Framebuffer fb = nr.make_framebuffer(RowSet::all(size));
   Framebuffer picture = kurc ? nr.make_framebuffer(RowSet::all(size)) : Framebuffer{};
   std::vector<ProjectedVertex> pv2(pv.size());
@@ -324,20 +369,8 @@ void render_loops(Probe& p, const Picture& pic, bool kurc) {
   p.time(kActiveLoops, pic.name,
          [&](Counters& c) { (void)zbuffer_spans(lists, all, nr.shade(), size, c); });
   if (kurc) {
-    p.time(kListMergeLoops, pic.name, [&](Counters& c) { (void)merge_active(odd, even, c); });
-    // A pair's exchange as zcube makes it (compositing/winning_pixels.cpp): the rows sent (odd)
-    // converted to wire records, the rows kept (even) copied out, the received rows merged into
-    // them from the wire.
-    std::vector<int> to_odd(static_cast<std::size_t>(size), -1);
-    for (int y = 1; y < size; y += 2)
-      to_odd[std::size_t(y)] = 1;
-    p.time(kWireLoops, pic.name, [&](Counters& c) {
-      const auto parts = serialize_sparse_by_owner(wpa, to_odd, 2);
-      const ActivePixels keep = select_rows(wpa, [](int y) { return y % 2 == 0; });
-      std::uint64_t got = 0;
-      (void)merge_active_sparse(keep, parts[1].data(), parts[1].size(), c, got);
-      c.wire_records += wpa.count() + got;
-    });
+    const PairInputs pair = pair_inputs(s, nr, pv, size);
+    time_pair_loops(p, pic.name, pair);
     // Kurc et al.'s output (compositing/gather.hpp): the final pixels packed into a message, which
     // node 0 unpacks and pastes into the picture.
     p.time(kOutputLoops, pic.name, [&](Counters& c) {
@@ -469,44 +502,68 @@ CostTable probe_prior() {
   return t;
 }
 
-// Solves the blocks in order: a loop's time less its groups measured before, divided among the
-// block's own groups (non-negative least squares on relative errors). Returns one multiplier a
-// group on the prior table and writes every loop's fitted prediction into `log`.
-std::vector<double> solve(const std::vector<Loop>& loops, nlohmann::json& log) {
+// One block's loops, solved for the block's groups: each loop's time less its groups measured
+// before (`k` where `known`), divided among the block's own groups (non-negative least squares on
+// relative errors). With `alone` (the multipliers rank 0 found timing the loops alone), a block of
+// several groups is solved for one common slowdown s over the alone split (k = s x alone): timed
+// at once, the ranks' shared memory system makes the z-buffer block's split between fragments and
+// far lines unsteady (two probes: a fragment 1.05 and 0.47 ns, a far line 31 and 49 ns) while
+// their sum on the probe's loops is steady; alone, the split holds. Returns s (1 when free).
+double solve_block(std::size_t b, const std::vector<Loop>& loops,
+                   const std::vector<std::vector<double>>& A, const std::vector<double>& alone,
+                   std::vector<double>& k, std::vector<bool>& known) {
+  const auto& gs = blocks()[b].groups;
+  double alone_sum = 0;
+  for (std::size_t g : gs)
+    alone_sum += alone.empty() ? 0.0 : alone[g];
+  const bool common = gs.size() > 1 && alone_sum > 0;
+  Matrix M;
+  std::vector<double> r;
+  for (std::size_t i = 0; i < loops.size(); ++i) {
+    if (loops[i].block != b) continue;
+    double rest = loops[i].seconds;
+    std::vector<double> row;
+    double at_alone = 0; // the block's groups priced at the alone multipliers
+    for (std::size_t g = 0; g < kGroups; ++g) {
+      const bool mine = std::find(gs.begin(), gs.end(), g) != gs.end();
+      if (known[g])
+        rest -= k[g] * A[i][g];
+      else if (mine && common)
+        at_alone += alone[g] * A[i][g];
+      else if (mine)
+        row.push_back(A[i][g] / loops[i].seconds);
+      else if (A[i][g] > 0)
+        throw std::logic_error("probe loop '" + loops[i].name + "' runs group " +
+                               probe_groups()[g].name + " before it is measured");
+    }
+    if (common) row.push_back(at_alone / loops[i].seconds);
+    M.push_back(row);
+    r.push_back(rest / loops[i].seconds);
+  }
+  if (M.empty())
+    throw std::logic_error(std::string("probe block without loop: ") + blocks()[b].name);
+  const std::vector<double> x = nnls(M, r);
+  for (std::size_t j = 0; j < gs.size(); ++j) {
+    k[gs[j]] = common ? x[0] * alone[gs[j]] : x[j];
+    known[gs[j]] = true;
+  }
+  return common ? x[0] : 1.0;
+}
+
+// Solves the blocks in order (solve_block). Returns one multiplier a group on the prior table and
+// writes every loop's fitted prediction into `log`.
+std::vector<double> solve(const std::vector<Loop>& loops, const std::vector<double>& alone,
+                          nlohmann::json& log) {
   const CostTable prior = probe_prior();
   std::vector<double> k(kGroups, 0.0);
   std::vector<bool> known(kGroups, false);
   std::vector<std::vector<double>> A;
   for (const Loop& l : loops)
     A.push_back(group_seconds(prior, probe_groups(), l.c));
+  nlohmann::json slowdown = nlohmann::json::object();
   for (std::size_t b = 0; b < blocks().size(); ++b) {
-    const auto& gs = blocks()[b].groups;
-    Matrix M;
-    std::vector<double> r;
-    for (std::size_t i = 0; i < loops.size(); ++i) {
-      if (loops[i].block != b) continue;
-      double rest = loops[i].seconds;
-      std::vector<double> row;
-      for (std::size_t g = 0; g < kGroups; ++g) {
-        const bool mine = std::find(gs.begin(), gs.end(), g) != gs.end();
-        if (known[g])
-          rest -= k[g] * A[i][g];
-        else if (mine)
-          row.push_back(A[i][g] / loops[i].seconds);
-        else if (A[i][g] > 0)
-          throw std::logic_error("probe loop '" + loops[i].name + "' runs group " +
-                                 probe_groups()[g].name + " before it is measured");
-      }
-      M.push_back(row);
-      r.push_back(rest / loops[i].seconds);
-    }
-    if (M.empty())
-      throw std::logic_error(std::string("probe block without loop: ") + blocks()[b].name);
-    const std::vector<double> x = nnls(M, r);
-    for (std::size_t j = 0; j < gs.size(); ++j) {
-      k[gs[j]] = x[j];
-      known[gs[j]] = true;
-    }
+    const double s = solve_block(b, loops, A, alone, k, known);
+    if (blocks()[b].groups.size() > 1 && !alone.empty()) slowdown[blocks()[b].name] = s;
   }
   nlohmann::json rows = nlohmann::json::array(), groups = nlohmann::json::array(),
                  mult = nlohmann::json::object(), per_op = nlohmann::json::object();
@@ -535,13 +592,18 @@ std::vector<double> solve(const std::vector<Loop>& loops, nlohmann::json& log) {
   // The loops (each its counters, time, the prior's seconds a group and the fitted prediction),
   // the groups, the prior table (seconds an operation on the 80386) and each group's multiplier on
   // it: what scripts/probe_instructions.py re-solves on instruction counts.
-  log = {{"loops", rows}, {"groups", groups}, {"prior_i386_s", per_op}, {"multipliers", mult}};
+  log = {{"loops", rows},
+         {"groups", groups},
+         {"prior_i386_s", per_op},
+         {"multipliers", mult},
+         {"slowdown_over_alone", slowdown}};
   return k;
 }
 
 } // namespace
 
-CostTable measure_cpu(const std::string& root, double min_seconds, nlohmann::json& log) {
+CpuCosts measure_cpu(const std::string& root, double min_seconds, nlohmann::json& log,
+                     const std::vector<double>& alone) {
   premap_heap(std::size_t(1) << 30);
   Probe p{min_seconds, {}, {}};
   // The bone's 78,738 triangles (a dense mesh as the bunny's, on no workload) at the workloads'
@@ -565,8 +627,8 @@ CostTable measure_cpu(const std::string& root, double min_seconds, nlohmann::jso
   // Every loop recorded in block order, so a block's loops come after those it subtracts.
   std::stable_sort(p.loops.begin(), p.loops.end(),
                    [](const Loop& a, const Loop& b) { return a.block < b.block; });
-  const std::vector<double> k = solve(p.loops, log);
-  return scale_groups(probe_prior(), probe_groups(), k);
+  const std::vector<double> k = solve(p.loops, alone, log);
+  return {scale_groups(probe_prior(), probe_groups(), k), k};
 }
 
 } // namespace zc

@@ -6,6 +6,7 @@
 // sizes. The loops are solved in a fixed order, each block of loops for its own cost groups with
 // the groups measured before it subtracted (docs/machines.md, "How the probe measures the CPU").
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -13,9 +14,19 @@
 
 namespace zc {
 
-// Seconds per counted operation on this rank's CPU. `log` receives every timed loop (its counters,
-// seconds and the fitted prediction).
-CostTable measure_cpu(const std::string& root, double min_seconds, nlohmann::json& log);
+// What the probe found on this rank's CPU: seconds per counted operation, and the multiplier of
+// each of the probe's cost groups on its prior table (what `cost` scales).
+struct CpuCosts {
+  CostTable cost;
+  std::vector<double> multipliers;
+};
+
+// The CPU's costs on this rank. `log` receives every timed loop (its counters, seconds and the
+// fitted prediction). `alone`: the multipliers of a probe of the same loops with the machine's
+// other cores idle (rank 0 alone); given, a block of several groups keeps their alone split and
+// fits one slowdown over it (docs/machines.md, "How the probe measures the CPU").
+CpuCosts measure_cpu(const std::string& root, double min_seconds, nlohmann::json& log,
+                     const std::vector<double>& alone = {});
 
 // Maps and touches `bytes` of heap before anything is timed and keeps them (every allocation from
 // the heap, none given back): the probe's loops and the MPI runs then find their buffers in memory

@@ -156,19 +156,33 @@ WinningPixel decode(const std::uint8_t* q) {
   std::memcpy(&px.id, q + 9, 4);
   return px;
 }
-// n pixels, encoded a block at a time into the stack and written with one bounds check a block
-// (a check a field made a message of winning pixels cost 60 instructions a pixel).
-void put_pixels(RegionWriter& out, const WinningPixel* p, std::size_t n) {
+// n pixels, encoded a block at a time into the stack and handed to put(block, bytes) (a check a
+// field made a message of winning pixels cost 60 instructions a pixel).
+template <class Put> void put_pixel_blocks(const WinningPixel* p, std::size_t n, Put put) {
   constexpr std::size_t kBlock = 256;
   std::uint8_t buf[kBlock * kWirePixelBytes];
   while (n) {
     const std::size_t k = std::min(n, kBlock);
     for (std::size_t i = 0; i < k; ++i)
       encode(buf + i * kWirePixelBytes, p[i]);
-    out.put_bytes(buf, k * kWirePixelBytes);
+    put(buf, k * kWirePixelBytes);
     p += k;
     n -= k;
   }
+}
+// n pixels written with one bounds check a block.
+void put_pixels(RegionWriter& out, const WinningPixel* p, std::size_t n) {
+  put_pixel_blocks(p, n, [&out](const std::uint8_t* b, std::size_t k) { out.put_bytes(b, k); });
+}
+// n pixels appended to `out` (its capacity reserved before: nothing cleared, then overwritten).
+void append_pixels(std::vector<std::uint8_t>& out, const WinningPixel* p, std::size_t n) {
+  put_pixel_blocks(
+      p, n, [&out](const std::uint8_t* b, std::size_t k) { out.insert(out.end(), b, b + k); });
+}
+void append_u32(std::vector<std::uint8_t>& out, std::uint32_t v) {
+  std::uint8_t b[4];
+  std::memcpy(b, &v, 4);
+  out.insert(out.end(), b, b + 4);
 }
 // n pixels read in place after one bounds check.
 void get_pixels(RecordReader& in, WinningPixel* out, std::size_t n) {
@@ -262,25 +276,23 @@ serialize_sparse_by_owner(const ActivePixels& a, const std::vector<int>& owner, 
       ++rows[std::size_t(dest(y))];
       pixels[std::size_t(dest(y))] += n;
     }
-  const std::size_t n_parts = std::size_t(parts);
-  std::vector<std::vector<std::uint8_t>> out(n_parts);
-  // Each part's row headers and pixels are filled at once, each through its own region.
-  std::vector<RegionWriter> head, body;
+  // Each part appended into its reserved buffer, its row headers and then its pixels (as
+  // serialize_sparse lays them out): a message of a pair's exchange is tens of megabytes, which a
+  // buffer sized first would clear only to overwrite.
+  std::vector<std::vector<std::uint8_t>> out(static_cast<std::size_t>(parts));
   for (std::size_t k = 0; k < out.size(); ++k) {
-    const std::size_t header = 4 + 8 * std::size_t(rows[k]);
-    out[k].resize(header + kWirePixelBytes * pixels[k]);
-    head.emplace_back(out[k].data(), header);
-    body.emplace_back(out[k].data() + header, out[k].size() - header);
-    head[k].put(rows[k]);
+    out[k].reserve(4 + 8 * std::size_t(rows[k]) + kWirePixelBytes * pixels[k]);
+    append_u32(out[k], rows[k]);
   }
-  for (int y = a.y0; y < a.y1; ++y) {
-    const std::uint32_t n = a.row_count(y);
-    if (!n || dest(y) < 0) continue;
-    const std::size_t k = std::size_t(dest(y));
-    head[k].put(std::uint32_t(y));
-    head[k].put(n);
-    put_pixels(body[k], a.pixels.data() + a.row_begin[std::size_t(y - a.y0)], n);
-  }
+  for (int y = a.y0; y < a.y1; ++y)
+    if (const std::uint32_t n = a.row_count(y); n && dest(y) >= 0) {
+      append_u32(out[std::size_t(dest(y))], std::uint32_t(y));
+      append_u32(out[std::size_t(dest(y))], n);
+    }
+  for (int y = a.y0; y < a.y1; ++y)
+    if (const std::uint32_t n = a.row_count(y); n && dest(y) >= 0)
+      append_pixels(out[std::size_t(dest(y))], a.pixels.data() + a.row_begin[std::size_t(y - a.y0)],
+                    n);
   return out;
 }
 
