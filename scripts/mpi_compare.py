@@ -6,6 +6,9 @@ Reads OUT/measured.csv (every run's phase times), OUT/core_share.csv (each run's
 there), OUT/predicted/<workload>-<P>.json (reports made
 before the measured runs), OUT/probe.txt and OUT/conditions.txt; writes OUT/comparison.csv and
 OUT/README.md. A point is measured as the median of its runs; the spread is (max - min) / median.
+With OUT/after/predicted/ (the same predictions from a second probe, made after the measured runs),
+the host's steadiness is checked: a point whose two predictions differ by more than a target (a
+judged figure) is not judged, and the exit status is 3 (the README's verdict line says which).
 """
 import csv
 import json
@@ -46,8 +49,33 @@ def single_copy_text(mechanism):
             "receiver waits for its sender's next MPI call)")
 
 
+def predicted_phases(path):
+    """A prediction's phases and total (seconds), from its report."""
+    pred = json.load(open(path))
+    pp = {x["name"]: x["max_s"] for x in pred["phases"]}
+    pp["total"] = pred["virtual_time_s"]
+    return pp
+
+
+def drift(before, after, judged):
+    """The largest relative change between two probes' predictions over the judged figures, and
+    whether any change passes its target (the total's or a phase's)."""
+    worst, beyond = 0.0, False
+    for ph in judged:
+        b, a = before.get(ph), after.get(ph)
+        if not b or a is None:
+            continue
+        d = (a - b) / b
+        if abs(d) > abs(worst):
+            worst = d
+        beyond = beyond or abs(d) > (TOTAL_TOL if ph == "total" else PHASE_TOL)
+    return worst, beyond
+
+
 def main():
     out, cores = sys.argv[1], int(sys.argv[2])
+    after_dir = os.path.join(out, "after", "predicted")
+    checked = os.path.isdir(after_dir)
     runs, procs, order = load_measured(os.path.join(out, "measured.csv"))
     cond = dict(
         line.strip().split("=", 1)
@@ -60,12 +88,11 @@ def main():
         for r in csv.DictReader(open(share_csv)):
             shares.setdefault((r["workload"], int(r["nodes"])), []).append(float(r["core_share"]))
     rows, totals, details = [], [], []
-    passed = failed = 0
+    passed = failed = unsteady = 0
+    worst_drift = 0.0
     for key in runs:
         name, p = key
-        pred = json.load(open(os.path.join(out, "predicted", f"{name}-{p}.json")))
-        pp = {x["name"]: x["max_s"] for x in pred["phases"]}
-        pp["total"] = pred["virtual_time_s"]
+        pp = predicted_phases(os.path.join(out, "predicted", f"{name}-{p}.json"))
         over = procs[key] > cores
         med = {ph: statistics.median(v) for ph, v in runs[key].items()}
         spread = {
@@ -75,6 +102,7 @@ def main():
         total = med["total"]
         lines = []
         ok = True
+        judged_figures = []
         for ph in order[key] + [x for x in pp if x not in order[key]]:
             m, s, pr = med.get(ph), spread.get(ph), pp.get(ph)
             err = (pr - m) / m if m and pr is not None and m > 0 else None
@@ -84,6 +112,7 @@ def main():
             good = err is not None and abs(err) <= tol
             if judged and not over:
                 ok = ok and good
+                judged_figures.append(ph)
             rows.append([name, p, procs[key], ph, m, s, pr, err, share])
             lines.append(
                 "| %s | %s | %s | %s | %s | %s |"
@@ -96,11 +125,19 @@ def main():
                     ("**%.0f %%**" if judged else "%.0f %%") % (100 * share),
                 )
             )
+        moved, shaky = 0.0, False
+        if checked and not over:
+            moved, shaky = drift(pp, predicted_phases(os.path.join(after_dir, f"{name}-{p}.json")),
+                                 judged_figures)
+            if abs(moved) > abs(worst_drift):
+                worst_drift = moved
         if not over:
-            passed += ok
-            failed += not ok
+            unsteady += shaky
+            passed += ok and not shaky
+            failed += not ok and not shaky
+        verdict = "-" if over else ("unsteady" if shaky else ("yes" if ok else "no"))
         totals.append(
-            "| %s | %d | %d%s | %s | %s | %s | %s | %s | %s |"
+            "| %s | %d | %d%s | %s | %s | %s | %s | %s | %s | %s |"
             % (
                 name,
                 p,
@@ -110,8 +147,9 @@ def main():
                 pct(spread["total"]),
                 fmt(pp["total"]),
                 pct((pp["total"] - total) / total),
-                "-" if over else ("yes" if ok else "no"),
+                verdict,
                 "%.0f %%" % (100 * statistics.median(shares[key])) if key in shares else "",
+                "-" if over or not checked else pct(moved),
             )
         )
         details.append(
@@ -126,6 +164,18 @@ def main():
         for r in rows:
             w.writerow([("" if v is None else (repr(v) if isinstance(v, float) else v)) for v in r])
     probe = open(os.path.join(out, "probe.txt")).read().strip()
+    if not checked:
+        steadiness = ("**Verdict: not checked** (no second probe after the measured runs: "
+                      "`after/`).")
+    elif unsteady:
+        steadiness = (f"**Verdict: the host was not steady, {unsteady} point(s) not judged**: the "
+                      "probe after the measured runs moves their prediction (a judged figure) by "
+                      f"more than its target (largest change {pct(worst_drift)}); run again on a "
+                      "quiet machine.")
+    else:
+        steadiness = ("**Verdict: steady host**: the probe after the measured runs predicts every "
+                      "judged figure within its target of the probe before (largest change "
+                      f"{pct(worst_drift)}).")
     with open(os.path.join(out, "README.md"), "w") as f:
         f.write(
             f"""# The MPI backend on this machine against the simulator's prediction
@@ -155,14 +205,21 @@ shared-memory transport copied large messages by {single_copy_text(cond.get('sin
    points the ranks themselves).
 4. Targets: the total within {TOTAL_TOL:.0%}, every phase above {PHASE_SHARE:.0%} of the run (bold
    share) within {PHASE_TOL:.0%}, at every point that is not oversubscribed: **{passed} met,
-   {failed} not**.
+   {failed} not**{f", {unsteady} not judged (unsteady)" if unsteady else ""}.
+5. The host's steadiness: `mpirun -np 2 zcube probe` again after the measured runs (`after/`), every
+   point predicted again on its platforms; the probe drift is the largest change of a judged figure
+   between the two predictions. A point whose drift passes a target (the total's {TOTAL_TOL:.0%}, a
+   phase's {PHASE_TOL:.0%}) measured a machine that changed under it: it is not judged.
+   {steadiness}
 
-| workload | P | processes | measured median (s) | spread | predicted (s) | error | targets met | core share |
-|---|---|---|---|---|---|---|---|---|
+| workload | P | processes | measured median (s) | spread | predicted (s) | error | targets met | core share | probe drift |
+|---|---|---|---|---|---|---|---|---|---|
 """
         )
         f.write("\n".join(totals) + "\n\n## Phase by phase\n\n" + "\n".join(details))
+    print(steadiness.replace("**", ""))
+    return 3 if unsteady else 0
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())

@@ -4,9 +4,13 @@
 #      platform of this machine for 1, 2 and 4 nodes;
 #   2. predict: every workload simulated on that platform, before anything is measured;
 #   3. measure: every workload run RUNS times on the MPI backend (P = 1, 2, and 4 oversubscribed);
-#   4. compare: medians of the measured runs, their spread, phase by phase (scripts/mpi_compare.py).
-# Nothing of the measured runs enters the prediction. About 8 minutes on 2 idle cores (elapsed_s in
-# conditions.txt); on a machine others load, run it later (the load average is recorded).
+#   4. steadiness: the probe again after the measured runs, every point predicted again on it;
+#   5. compare: medians of the measured runs, their spread, phase by phase (scripts/mpi_compare.py).
+# Nothing of the measured runs enters the prediction. A point whose two probes' predictions differ
+# by more than a target measured a host that changed under it: it is not judged, and the script
+# exits 3 after writing the README (its verdict line says which points). About 6 minutes on 2 idle
+# cores, the probe's two runs included (elapsed_s in conditions.txt); on a machine others load, run
+# it later (the load average is recorded).
 # usage: scripts/mpi_vs_model.sh [zcube=build/zcube] [out=results/mpi]
 #   RUNS=5 (runs per point), QUICK=1 (small workloads, one run each: tests/mpi),
 #   ZCUBE_MPI_CLOCK=cpu (time phases on the processes' CPU time, on a machine others load)
@@ -64,14 +68,18 @@ mpirun -np 2 "$zcube" probe --out "$out/cluster.xml" --nodes 1,2,4 --json "$out/
   --seconds "$seconds" >"$out/probe.txt"
 
 # 2. Predictions, before any measured run.
-for w in "${workloads[@]}"; do
-  IFS='|' read -r name host args <<<"$w"
-  for p in "${nodes[@]}"; do
-    # shellcheck disable=SC2086
-    "$zcube" run --machine "$out/cluster-$p.xml" --fidelity analytic $args --nodes $p \
-      --report "$out/predicted/$name-$p.json" >/dev/null
+predict() { # platforms-stem reports-dir
+  mkdir -p "$2"
+  for w in "${workloads[@]}"; do
+    IFS='|' read -r name host args <<<"$w"
+    for p in "${nodes[@]}"; do
+      # shellcheck disable=SC2086
+      "$zcube" run --machine "$1-$p.xml" --fidelity analytic $args --nodes $p \
+        --report "$2/$name-$p.json" >/dev/null
+    done
   done
-done
+}
+predict "$out/cluster" "$out/predicted"
 
 # 3. Measured runs (P + 1 processes for a method with a host computer). A rank waiting for a message
 # yields its core (OpenMPI's mpi_yield_when_idle) instead of spinning on it: with more processes
@@ -104,11 +112,20 @@ PY
     done
   done
 done
-{
-  echo "load_after=$(cut -d' ' -f1-3 /proc/loadavg)"
-  echo "elapsed_s=$(($(date +%s) - start))"
-} >>"$out/conditions.txt"
+echo "load_after=$(cut -d' ' -f1-3 /proc/loadavg)" >>"$out/conditions.txt"
 
-# 4. The comparison.
-python3 scripts/mpi_compare.py "$out" "$(nproc)"
+# 4. The host's steadiness: the same probe after the measured runs, and every point predicted on
+# it (the probe times on the thread's CPU clock; what moves it is a changed machine: its clock
+# rate, its memory system's load). Two runs of one binary 20 minutes apart differed by up to 45 %.
+rm -rf "$out/after"
+mkdir -p "$out/after"
+mpirun -np 2 "$zcube" probe --out "$out/after/cluster.xml" --nodes 1,2,4 \
+  --json "$out/after/probe.json" --seconds "$seconds" >"$out/after/probe.txt"
+predict "$out/after/cluster" "$out/after/predicted"
+echo "elapsed_s=$(($(date +%s) - start))" >>"$out/conditions.txt"
+
+# 5. The comparison; exit 3 when the two probes disagree by more than a target at a judged point.
+status=0
+python3 scripts/mpi_compare.py "$out" "$(nproc)" || status=$?
 echo "wrote $out/README.md"
+exit "$status"
