@@ -156,28 +156,20 @@ WinningPixel decode(const std::uint8_t* q) {
   std::memcpy(&px.id, q + 9, 4);
   return px;
 }
-// n pixels, encoded a block at a time into the stack and handed to put(block, bytes) (a check a
-// field made a message of winning pixels cost 60 instructions a pixel).
-template <class Put> void put_pixel_blocks(const WinningPixel* p, std::size_t n, Put put) {
+// n pixels appended to `out` (its capacity reserved before: nothing cleared, then overwritten),
+// encoded a block at a time into the stack (a bounds check a field made a message of winning
+// pixels cost 60 instructions a pixel).
+void append_pixels(std::vector<std::uint8_t>& out, const WinningPixel* p, std::size_t n) {
   constexpr std::size_t kBlock = 256;
   std::uint8_t buf[kBlock * kWirePixelBytes];
   while (n) {
     const std::size_t k = std::min(n, kBlock);
     for (std::size_t i = 0; i < k; ++i)
       encode(buf + i * kWirePixelBytes, p[i]);
-    put(buf, k * kWirePixelBytes);
+    out.insert(out.end(), buf, buf + k * kWirePixelBytes);
     p += k;
     n -= k;
   }
-}
-// n pixels written with one bounds check a block.
-void put_pixels(RegionWriter& out, const WinningPixel* p, std::size_t n) {
-  put_pixel_blocks(p, n, [&out](const std::uint8_t* b, std::size_t k) { out.put_bytes(b, k); });
-}
-// n pixels appended to `out` (its capacity reserved before: nothing cleared, then overwritten).
-void append_pixels(std::vector<std::uint8_t>& out, const WinningPixel* p, std::size_t n) {
-  put_pixel_blocks(
-      p, n, [&out](const std::uint8_t* b, std::size_t k) { out.insert(out.end(), b, b + k); });
 }
 void append_u32(std::vector<std::uint8_t>& out, std::uint32_t v) {
   std::uint8_t b[4];
@@ -219,19 +211,10 @@ void merge_row_wire(const WinningPixel* a, const WinningPixel* ae, const std::ui
 // Layout: u32 row count; per non-empty row (u32 y, u32 count); then per pixel x(2) rgb(3) z(4)
 // id(4).
 std::vector<std::uint8_t> serialize_sparse(const ActivePixels& a) {
-  std::uint32_t rows = 0;
-  for (int y = a.y0; y < a.y1; ++y)
-    rows += a.row_count(y) > 0;
-  std::vector<std::uint8_t> out(4 + 8 * std::size_t(rows) + kWirePixelBytes * a.pixels.size());
-  RegionWriter w(out.data(), out.size());
-  w.put(rows);
-  for (int y = a.y0; y < a.y1; ++y)
-    if (a.row_count(y)) {
-      w.put(std::uint32_t(y));
-      w.put(a.row_count(y));
-    }
-  put_pixels(w, a.pixels.data(), a.pixels.size());
-  return out;
+  // Every row to one destination: appended into its reserved buffer (serialize_sparse_by_owner),
+  // not sized (a clear of the whole message) and then overwritten.
+  return std::move(
+      serialize_sparse_by_owner(a, std::vector<int>(std::size_t(std::max(a.y1, 0)), 0), 1)[0]);
 }
 
 ActivePixels deserialize_sparse(const std::uint8_t* p, std::size_t size, int width, int y0,
@@ -254,8 +237,12 @@ ActivePixels deserialize_sparse(const std::uint8_t* p, std::size_t size, int wid
   for (int y = y0; y < y1; ++y)
     a.row_begin[y - y0 + 1] = a.row_begin[y - y0] + count[y - y0];
   in.require(a.row_begin.back(), kWirePixelBytes);
-  a.pixels.resize(a.row_begin.back());
-  get_pixels(in, a.pixels.data(), a.pixels.size());
+  // Decoded into the reserved array (sized first, it would be cleared, then overwritten).
+  const std::size_t n = a.row_begin.back();
+  const std::uint8_t* q = in.get_bytes(n * kWirePixelBytes);
+  a.pixels.reserve(n);
+  for (std::size_t i = 0; i < n; ++i)
+    a.pixels.push_back(decode(q + i * kWirePixelBytes));
   return a;
 }
 
