@@ -437,7 +437,7 @@ void multiscatter_loops(Probe& p, const Picture& pic, int nodes) {
         c.bytes_packed += n * elastic::kTriangleWireBytes;
     }
     for (int r = 0; r < nodes; ++r) {
-      std::vector<Bytes> got;
+      std::vector<Payload> got; // read in place, as elastic.cpp reads them
       for (int k = 0; k < nodes; ++k)
         got.push_back(std::move(sent[k].payloads[r]));
       (void)elastic::read_slices<elastic::BroadcastVertices>(got, T, false, 0, c);
