@@ -81,18 +81,10 @@ std::string top_readme(const ReproduceOptions& o, std::size_t points,
 // SimConfig must be added here too, or two different runs would be taken for one.)
 std::string config_key(const SimConfig& c) {
   if (c.custom) throw std::logic_error("reproduce plans name their algorithms");
-  nlohmann::json j = {{"machine", c.machine},
-                      {"nodes", c.nodes},
-                      {"topology", topology_name(c.topology)},
-                      {"fidelity", fidelity_name(c.fidelity)},
-                      {"algorithm", c.algorithm},
-                      {"options", c.options.values},
-                      {"frames", c.options.frames},
-                      {"scene", c.scene_path},
-                      {"width", c.width},
-                      {"height", c.height},
-                      {"compare", c.compare_with_sequential},
-                      {"simgrid", c.simgrid_args}};
+  nlohmann::json j = program_inputs(c);
+  j["machine"] = c.machine;
+  j["fidelity"] = fidelity_name(c.fidelity);
+  j["simgrid"] = c.simgrid_args;
   const Overrides& v = c.overrides;
   const std::pair<const char*, const std::optional<double>*> over[] = {
       {"latency_s", &v.latency_s},

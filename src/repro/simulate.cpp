@@ -201,13 +201,19 @@ void set_batch_simgrid_args(std::vector<std::string> args) {
   batch_simgrid_args() = std::move(args);
 }
 
-namespace {
-
-const Scene* batch_scene(const SimConfig& cfg) {
-  const auto& cache = scene_cache();
-  const auto it = cfg.scene_path.empty() ? cache.end() : cache.find(scene_key(cfg));
-  return it == cache.end() ? nullptr : it->second.get();
+nlohmann::json program_inputs(const SimConfig& c) {
+  return {{"algorithm", c.algorithm},
+          {"options", c.options.values},
+          {"frames", c.options.frames},
+          {"scene", c.scene_path},
+          {"width", c.width},
+          {"height", c.height},
+          {"nodes", c.nodes},
+          {"topology", topology_name(c.topology)},
+          {"compare", c.compare_with_sequential}};
 }
+
+namespace {
 
 // The point with this process's batch SimGrid settings after its own.
 SimConfig with_batch_args(const SimConfig& cfg) {
@@ -217,27 +223,17 @@ SimConfig with_batch_args(const SimConfig& cfg) {
   return c;
 }
 
-// What a node program's calls depend on (run/call_trace.hpp): not the machine, its what-ifs or
-// the fidelity. The node count and topology a platform file gives are checked by the replay. A
-// point that draws a timeline runs in full (its report is the full run's in any case).
+// The node count and topology a platform file gives are checked by the replay. A point that draws
+// a timeline runs in full (its report is the full run's in any case).
 std::string replay_key(const SimConfig& c) {
   if (c.custom || c.timeline) return "";
-  return nlohmann::json{{"algorithm", c.algorithm},
-                        {"options", c.options.values},
-                        {"frames", c.options.frames},
-                        {"scene", c.scene_path},
-                        {"width", c.width},
-                        {"height", c.height},
-                        {"nodes", c.nodes},
-                        {"topology", topology_name(c.topology)},
-                        {"compare", c.compare_with_sequential}}
-      .dump();
+  return program_inputs(c).dump();
 }
 
 nlohmann::json record_point(const SimConfig& cfg, std::vector<std::uint8_t>* trace) {
   if (!trace) return simulate_point(cfg);
   std::shared_ptr<CallTrace> t;
-  SimResult r = record_simulation(with_batch_args(cfg), batch_scene(cfg), t);
+  SimResult r = record_simulation(with_batch_args(cfg), cached_scene(cfg), t);
   if (t) *trace = t->serialize();
   attach_paper_figures(r.report);
   return r.report;
@@ -246,7 +242,7 @@ nlohmann::json record_point(const SimConfig& cfg, std::vector<std::uint8_t>* tra
 std::optional<nlohmann::json> replay_point(const SimConfig& cfg,
                                            const std::vector<std::uint8_t>& trace) {
   auto t = std::make_shared<const CallTrace>(CallTrace::parse(trace));
-  std::optional<SimResult> r = replay_simulation(with_batch_args(cfg), batch_scene(cfg), t);
+  std::optional<SimResult> r = replay_simulation(with_batch_args(cfg), cached_scene(cfg), t);
   if (!r) return std::nullopt;
   attach_paper_figures(r->report);
   return std::move(r->report);
@@ -288,7 +284,7 @@ replaying_batch(const std::vector<SimConfig>& points, int jobs,
 } // namespace
 
 nlohmann::json simulate_point(const SimConfig& cfg) {
-  SimResult r = run_simulation(with_batch_args(cfg), batch_scene(cfg));
+  SimResult r = run_simulation(with_batch_args(cfg), cached_scene(cfg));
   attach_paper_figures(r.report);
   return r.report;
 }

@@ -17,6 +17,11 @@ void attach_paper_figures(nlohmann::json& report);
 // own: the --cfg/--log of reproduce, regress, calibrate and sweep.
 void set_batch_simgrid_args(std::vector<std::string> args);
 
+// What a node program's calls depend on (run/call_trace.hpp), as JSON: the algorithm, its options
+// and frames, the scene, the size, the node count, the topology and the image comparison; not the
+// machine, its what-ifs or the fidelity. A point's whole key adds those (reproduce's config_key).
+nlohmann::json program_inputs(const SimConfig& c);
+
 // One simulation's report, paper figures attached: the point runner of zcube's batches.
 nlohmann::json simulate_point(const SimConfig& cfg);
 

@@ -49,12 +49,7 @@ std::string report_text(const std::function<nlohmann::json()>& run) {
 // In the child: run, write the output to fd, exit without running the parent's atexit handlers
 // or flushing its buffers twice.
 [[noreturn]] void child_main(const Job& job, int fd) {
-  std::string out;
-  try {
-    out = job.work();
-  } catch (const std::exception& ex) {
-    out = nlohmann::json{{"status", "error"}, {"error", ex.what()}}.dump();
-  }
+  const std::string out = job.work(); // a report or the error (report_text)
   std::size_t off = 0;
   while (off < out.size()) {
     const ssize_t n = write(fd, out.data() + off, out.size() - off);
