@@ -82,7 +82,7 @@ void render_if_touching(NodeContext& ctx, const NodeRenderer& nr, Framebuffer& f
 
 void host_broadcast_node(NodeContext& ctx) {
   check_scene(ctx.scene());
-  const NodeRenderer nr(ctx.scene());
+  const NodeRenderer nr(ctx.scene(), ctx.scene().camera, ctx.scene_facts().bounds);
   const RowSet rows = rows_of_node(ctx, nr.height());
   const Message scene = receive_broadcast(ctx);
   Framebuffer fb = nr.make_framebuffer(rows);

@@ -92,7 +92,7 @@ void host_initiated_host(NodeContext& ctx) {
 // held) into the node's full frame buffer, and acknowledged.
 void host_initiated_node(NodeContext& ctx) {
   check_scene(ctx.scene());
-  const NodeRenderer nr(ctx.scene());
+  const NodeRenderer nr(ctx.scene(), ctx.scene().camera, ctx.scene_facts().bounds);
   Framebuffer fb;
   {
     auto ph = ctx.phase("render"); // the clear of the new frame buffer is the phase's

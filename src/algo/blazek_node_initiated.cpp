@@ -32,7 +32,7 @@ void describe_round_robin(NodeContext& ctx) {
 // its polygons held while they are rendered into the node's full frame buffer.
 void node_initiated_node(NodeContext& ctx) {
   check_scene(ctx.scene());
-  const NodeRenderer nr(ctx.scene());
+  const NodeRenderer nr(ctx.scene(), ctx.scene().camera, ctx.scene_facts().bounds);
   Framebuffer fb;
   {
     auto ph = ctx.phase("render"); // the clear of the new frame buffer is the phase's

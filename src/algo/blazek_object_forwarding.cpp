@@ -116,7 +116,7 @@ void object_forwarding_node(NodeContext& ctx) {
   check_scene(ctx.scene());
   Comm& c = ctx.comm();
   const bool objects = forwards_objects(ctx);
-  const NodeRenderer nr(ctx.scene());
+  const NodeRenderer nr(ctx.scene(), ctx.scene().camera, ctx.scene_facts().bounds);
   StripNode n{ctx, nr, objects, nr.make_framebuffer(strip_rows(c.rank(), c.size(), nr.height())),
               {},  0};
   ctx.alloc(frame_buffer_bytes(n.fb), "strip frame buffer");

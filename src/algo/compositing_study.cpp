@@ -84,7 +84,7 @@ compositing::Measures run(NodeContext& ctx, const Contender& c, const ActivePixe
 }
 
 void study_node(NodeContext& ctx) {
-  const NodeRenderer nr(ctx.scene());
+  const NodeRenderer nr(ctx.scene(), ctx.scene().camera, ctx.scene_facts().bounds);
   const kurc::NodeTriangles mine = kurc::distribute_triangles(ctx);
   ActivePixels local;
   {

@@ -103,7 +103,7 @@ void output(NodeContext& ctx, const NodeRenderer& nr, MergeScheme& scheme,
 void kurc_node(NodeContext& ctx, MergeScheme& scheme) {
   if (ctx.comm().topology() != Topology::Cube)
     throw UsageError("Kurc et al.'s pixel merging runs on a hypercube (--topology cube)");
-  const NodeRenderer nr(ctx.scene());
+  const NodeRenderer nr(ctx.scene(), ctx.scene().camera, ctx.scene_facts().bounds);
   const NodeTriangles mine = distribute_triangles(ctx);
   // The timed region is Table 2's three columns: not the deal before them nor the output after
   // (docs/papers.md).

@@ -19,7 +19,7 @@ void scanline_node(NodeContext& ctx) {
   const Scene& scene = ctx.scene();
   if (scene.textured()) throw UsageError("the scanline baseline renders untextured scenes");
   const int H = scene.height;
-  const NodeRenderer nr(scene);
+  const NodeRenderer nr(scene, scene.camera, ctx.scene_facts().bounds);
   // The polygons as a node of the schemes holds its share: the dealt record (records.hpp).
   ctx.alloc(double(records::kurc::kPolygon) * double(scene.triangles.size()), "polygons");
   const kurc::NodeTriangles mine = kurc::all_triangles(scene);

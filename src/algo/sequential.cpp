@@ -19,7 +19,7 @@ void sequential_node(NodeContext& ctx) {
                    base.triangles.size() * records::charles::kTriangle),
             "scene");
   for (int f = 0; f < frames; ++f) {
-    const NodeRenderer nr(base, camera_at_frame(base.camera, f, frames));
+    const NodeRenderer nr(base, camera_at_frame(base.camera, f, frames), ctx.scene_facts().bounds);
     // The frame buffer (depth and colour) and the projected vertices, as the paper's records.
     const double fb_bytes =
         double(base.width) * base.height * double(records::charles::kZbufferLocation);

@@ -117,7 +117,7 @@ void output(NodeContext& ctx, const NodeRenderer& nr, Picture& picture, const Lo
 }
 
 void sort_last_node(NodeContext& ctx, const compositing::Strategy& s) {
-  const NodeRenderer nr(ctx.scene());
+  const NodeRenderer nr(ctx.scene(), ctx.scene().camera, ctx.scene_facts().bounds);
   const kurc::NodeTriangles mine = kurc::distribute_triangles(ctx);
   ctx.start_timed_region();
   LocalPicture lp;

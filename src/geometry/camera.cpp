@@ -7,16 +7,6 @@
 
 namespace zc {
 
-void Bounds::add(const glm::dvec3& p) {
-  if (empty) {
-    lo = hi = p;
-    empty = false;
-  } else {
-    lo = glm::min(lo, p);
-    hi = glm::max(hi, p);
-  }
-}
-
 void resolve_clip_planes(const Camera& cam, const Bounds& b, double& znear, double& zfar) {
   znear = cam.znear;
   zfar = cam.zfar;

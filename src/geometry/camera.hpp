@@ -18,7 +18,16 @@ struct Camera {
 struct Bounds {
   glm::dvec3 lo{0}, hi{0};
   bool empty = true;
-  void add(const glm::dvec3& p);
+  // Inline: scene_bounds calls it once per vertex of the scene.
+  void add(const glm::dvec3& p) {
+    if (empty) {
+      lo = hi = p;
+      empty = false;
+    } else {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+  }
   glm::dvec3 center() const { return (lo + hi) * 0.5; }
   double radius() const { return empty ? 0.0 : glm::length(hi - lo) * 0.5; }
 };
