@@ -165,6 +165,30 @@ bool inside_view(const ClipPolygon& poly) {
   return in;
 }
 
+// The clip outcodes of three projected vertices as clip_polygon works them out (the same planes
+// and arithmetic on the same doubles; NaN counts as outside): the bits all share, the bits any has.
+void outcodes(const ProjectedVertex* const v[3], unsigned& all_and, unsigned& any_or) {
+  all_and = 0x3f;
+  any_or = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double x = v[i]->clip[0], y = v[i]->clip[1], z = v[i]->clip[2], w = v[i]->clip[3];
+    const double gw = kGuardBand * w;
+    const unsigned code = unsigned(!(z + w >= 0)) | unsigned(!(w - z >= 0)) << 1 |
+                          unsigned(!(gw + x >= 0)) << 2 | unsigned(!(gw - x >= 0)) << 3 |
+                          unsigned(!(gw + y >= 0)) << 4 | unsigned(!(gw - y >= 0)) << 5;
+    all_and &= code;
+    any_or |= code;
+  }
+}
+
+// snap(v).Y of a vertex inside every plane, without building its clip vertex.
+std::int64_t snapped_y(const ProjectedVertex& v, int height) {
+  const double invw = 1.0 / double(v.clip[3]);
+  const double sy = (0.5 - double(v.clip[1]) * invw * 0.5) * height;
+  const double big = 4.0e18;
+  return std::fabs(sy * kSub) < big ? round_half_away(sy * kSub) : std::int64_t(big);
+}
+
 } // namespace
 
 bool ScreenTriangle::span(int y, int width, int& x0, int& x1) const {
@@ -188,27 +212,26 @@ bool ScreenTriangle::span(int y, int width, int& x0, int& x1) const {
 }
 
 bool row_extent(const ProjectedVertex* const v[3], int width, int height, int& y0, int& y1) {
-  ClipPolygon poly;
-  poly.n = 3;
-  for (int i = 0; i < 3; ++i) {
-    for (int k = 0; k < 4; ++k)
-      poly.v[i].a[k] = v[i]->clip[k];
-    for (int k = 4; k < kClipAttrs; ++k)
-      poly.v[i].a[k] = 0;
-  }
-  // Only the outcodes are needed: clip_polygon returns before cutting when all are inside.
-  ClipPolygon probe = poly;
-  probe.n = 3;
-  const ClipResult cr = clip_polygon(probe, kGuardBand);
-  if (cr == kClipOutside) return false;
-  if (cr == kClipCut) {
+  (void)width; // the rows do not depend on it
+  // Only the outcodes are needed from the clipper; most triangles lie inside every plane, and their
+  // rows come from the vertices as set-up snaps them (no clip polygon built for them).
+  unsigned all_and = 0, any_or = 0;
+  outcodes(v, all_and, any_or);
+  if (all_and) return false;
+  if (any_or) { // cut, or entirely outside once cut: clip_polygon tells which
+    ClipPolygon poly;
+    poly.n = 3;
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < kClipAttrs; ++k)
+        poly.v[i].a[k] = k < 4 ? double(v[i]->clip[k]) : 0.0;
+    if (clip_polygon(poly, kGuardBand) == kClipOutside) return false;
     y0 = 0;
     y1 = height - 1;
     return height > 0;
   }
   std::int64_t miny = INT64_MAX, maxy = INT64_MIN;
   for (int i = 0; i < 3; ++i) {
-    const std::int64_t Y = snap(poly.v[i], width, height).Y;
+    const std::int64_t Y = snapped_y(*v[i], height);
     miny = std::min(miny, Y);
     maxy = std::max(maxy, Y);
   }
