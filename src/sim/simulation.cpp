@@ -102,6 +102,12 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   // same computation with every number multiplied by k.
   args.push_back("--cfg=surf/precision:" +
                  format_double(1e-12 * cfg.overrides.cost_scale.value_or(1.0)));
+  // Under the flow fidelity every message is an actor (Delivery::post): SimGrid's guard page on
+  // its stack cost an mprotect pair that split and merged the heap's mapping, a quarter of the
+  // host CPU of a 128-node run and a third of a 1024-node one. Those runs go without stack guards
+  // (the ranks' stacks are 8 MiB, far more than the renderers use); --cfg=contexts/guard-size:1,
+  // passed after this, puts them back.
+  if (cfg.fidelity == Fidelity::Flow) args.push_back("--cfg=contexts/guard-size:0");
   args.insert(args.end(), cfg.simgrid_args.begin(), cfg.simgrid_args.end());
   std::vector<char*> argv;
   for (auto& a : args)
