@@ -118,6 +118,7 @@ enum BlockId : std::size_t {
   kOutputLoops,
   kDenseOutputLoops,
   kMultiScatterLoops,
+  kNearZbufferLoops,
   kZbufferLoops,
   kSpanListLoops,
   kActiveLoops,
@@ -142,10 +143,13 @@ const std::vector<Block>& blocks() {
       {"sparse output", {kRecords}},
       {"dense output", {kScan}},
       {"multiscatter", {kTriangleRecords}},
-      // The frame-buffer z-buffer: a triangle's edges, its spans (found and started), its
-      // fragments, its far lines; the scenes' and sizes' different mixes separate them (the
-      // scattered orders: the same triangles, other far lines).
-      {"z-buffer", {kEdges, kSpans, kPixels, kFarLines}},
+      // The frame-buffer z-buffer in a band of rows whose depth the recent-lines window holds (no
+      // far line): a triangle's edges, its spans (found and started), its fragments; the scenes'
+      // and sizes' different mixes separate them.
+      {"near z-buffer", {kEdges, kSpans, kPixels}},
+      // The frame-buffer z-buffer on whole pictures, less the above: its far lines (the scattered
+      // orders: the same triangles, other far lines).
+      {"z-buffer", {kFarLines}},
       {"span lists", {kSort}},
       {"active z-buffer", {kScanline}}};
   return b;
@@ -406,6 +410,41 @@ void scattered_loops(Probe& p, const Picture& pic) {
   p.run();
 }
 
+// The frame-buffer z-buffer in the picture's middle band of rows whose depth the recent-lines
+// window holds (RecentLines::kWindow lines: 32 rows at 4096, 256 at 512), on the triangles that
+// enter it, as one of elastic's slices draws them: no far line, so the block's loops determine
+// edges, spans and fragments without them (on whole pictures, fragments and far lines grow
+// together and traded cost from one probe to the next: docs/machines.md). The band's depth, ids
+// and colours (about 1.4 MB) stay in this machine's 2 MB L2, as the window assumes.
+void near_loops(Probe& p, const Picture& pic) {
+  const Scene& s = pic.s;
+  const int size = pic.size;
+  const int rows = std::min(size, int(RecentLines::kWindow * RecentLines::kLocations) / size);
+  const int y0 = (size - rows) / 2;
+  const NodeRenderer nr(s);
+  const std::vector<ProjectedVertex> pv = probe_projected_vertices(nr, s);
+  std::vector<std::size_t> in_band; // the slice's triangles (elastic's MultiScatter sends these)
+  for (std::size_t i = 0; i < s.triangles.size(); ++i) {
+    const Triangle& t = s.triangles[i];
+    const ProjectedVertex* p3[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
+    int a = 0, b = 0;
+    if (row_extent(p3, size, size, a, b) && a < y0 + rows && b >= y0) in_band.push_back(i);
+  }
+  Framebuffer fb = nr.make_framebuffer(RowSet::band(y0, y0 + rows));
+  p.time(
+      kNearZbufferLoops,
+      pic.name + " rows " + std::to_string(y0) + "-" + std::to_string(y0 + rows - 1),
+      [&] { fb.clear(nr.background()); },
+      [&, one = TriangleBatch{}](Counters& c) mutable {
+        for (std::size_t i : in_band) {
+          one.clear();
+          nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, one, c);
+          draw_batch(one, nr.shade(), fb, c);
+        }
+      });
+  p.run();
+}
+
 // Charles et al.'s MultiScatter of triangles (elastic_multiscatter.hpp) among `nodes` nodes, all
 // in this process: each node's block of the picture's triangles packed for the slices of equal
 // rows, then each slice read out of its messages; the records' bytes as elastic charges them.
@@ -506,9 +545,9 @@ CostTable probe_prior() {
 // before (`k` where `known`), divided among the block's own groups (non-negative least squares on
 // relative errors). With `alone` (the multipliers rank 0 found timing the loops alone), a block of
 // several groups is solved for one common slowdown s over the alone split (k = s x alone): timed
-// at once, the ranks' shared memory system makes the z-buffer block's split between fragments and
-// far lines unsteady (two probes: a fragment 1.05 and 0.47 ns, a far line 31 and 49 ns) while
-// their sum on the probe's loops is steady; alone, the split holds. Returns s (1 when free).
+// at once, the ranks' shared memory system made the z-buffer's split unsteady (two probes: a
+// fragment 1.05 and 0.47 ns) while its sum on the probe's loops was steady. Returns s (1 when
+// free).
 double solve_block(std::size_t b, const std::vector<Loop>& loops,
                    const std::vector<std::vector<double>>& A, const std::vector<double>& alone,
                    std::vector<double>& k, std::vector<bool>& known) {
@@ -611,7 +650,10 @@ CpuCosts measure_cpu(const std::string& root, double min_seconds, nlohmann::json
   // span), 2048 and 4096 (Kurc's bunny at 5120x5120: 20 rows, 8 pixels a span; a frame buffer of
   // hundreds of megabytes). The thesis's 16 spheres: Blazek's triangles at the workload's size.
   // The bone shuffled: the z-buffer's far lines of a scanned mesh listed without locality (the
-  // bunny's file). MultiScatter's triangle records: the bone's triangles among 1 and 2 nodes.
+  // bunny's file). The bands: the z-buffer without far lines, the spheres' (a triangle a pixel or
+  // less) and Figure 9's cubes (spans of hundreds of pixels) beside the bone's; whole pictures
+  // then price the far lines alone. MultiScatter's triangle records: the bone's triangles among
+  // 1 and 2 nodes.
   render_loops(p, load(root + "/scenes/bone.json", 512), false);
   render_loops(p, load(root + "/scenes/bone.json", 1024), false);
   render_loops(p, load(root + "/scenes/bone.json", 2048), false);
@@ -619,6 +661,10 @@ CpuCosts measure_cpu(const std::string& root, double min_seconds, nlohmann::json
   scattered_loops(p, load(root + "/scenes/bone.json", 512));
   scattered_loops(p, load(root + "/scenes/bone.json", 1024));
   scattered_loops(p, load(root + "/scenes/bone.json", 2048));
+  for (int size : {512, 1024, 2048, 4096})
+    near_loops(p, load(root + "/scenes/bone.json", size));
+  near_loops(p, load(root + "/scenes/blazek/thesis_spheres_16.json", 512));
+  near_loops(p, load(root + "/scenes/blazek_fig9.sdl", 4096));
   multiscatter_loops(p, load(root + "/scenes/bone.json", 1024), 1);
   multiscatter_loops(p, load(root + "/scenes/bone.json", 1024), 2);
   sphere_loops(p, load(root + "/scenes/blazek/thesis_spheres_16.json", 512));
