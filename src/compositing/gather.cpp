@@ -16,14 +16,18 @@ std::vector<Message> gather(Comm& c, int root, Message part) {
   return coll::gatherv(c, root, std::move(part));
 }
 
-void paste(const std::vector<Message>& parts, Framebuffer& picture, int height, Counters& w) {
+std::uint64_t paste(const std::vector<Message>& parts, Framebuffer& picture, int height,
+                    Counters& w) {
+  std::uint64_t pasted = 0;
   for (const auto& m : parts) {
     const Bytes& b = m.payload;
     const ActivePixels got = deserialize_sparse(b.data(), b.size(), picture.width(), 0, height);
     scatter_active(got, picture);
     w.bytes_packed += 2 * b.size();
     w.records_packed += 2 * got.count(); // each pixel read from its record, then written
+    pasted += got.count();
   }
+  return pasted;
 }
 
 } // namespace zc::compositing

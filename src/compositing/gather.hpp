@@ -19,7 +19,9 @@ Message pack_pixels(const ActivePixels& mine, Message (*charge)(Bytes, const Pix
 // Every node's message to root, by rank there (coll::gatherv over the group's channels).
 std::vector<Message> gather(Comm& c, int root, Message part);
 // At root: every part written into `picture` (rows cleared by the caller), two passes over its
-// bytes (the records unpacked, then written to their locations) counted into w.
-void paste(const std::vector<Message>& parts, Framebuffer& picture, int height, Counters& w);
+// bytes (the records unpacked, then written to their locations) counted into w. Returns the pixels
+// written: the picture's covered pixels when the parts are every node's final pixels.
+std::uint64_t paste(const std::vector<Message>& parts, Framebuffer& picture, int height,
+                    Counters& w);
 
 } // namespace zc::compositing

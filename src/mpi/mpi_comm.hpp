@@ -44,6 +44,7 @@ public:
 private:
   void check_peer(int peer, int tag) const;
   void reap(); // drops the sends that have completed
+  Bytes receive_body(std::size_t n, int from_rank, int tag);
 
   // Blocking sends are posted as MPI_Isend and kept here until complete: like the simulator's
   // eager mailboxes, a send never waits for its receiver, so two nodes that send to each other

@@ -9,6 +9,22 @@
 
 namespace zc {
 
+namespace {
+// The columns an x_min-sorted scanline list covers: what zbuffer_spans appends to the WPA (each
+// span's columns right of those produced before it).
+std::size_t union_columns(std::vector<SpanRecord>::const_iterator b,
+                          std::vector<SpanRecord>::const_iterator e) {
+  std::size_t n = 0;
+  int maxx = -1;
+  for (; b != e; ++b) {
+    const int from = std::max(b->x0, maxx + 1);
+    if (b->x1 >= from) n += std::size_t(b->x1 - from + 1);
+    maxx = std::max(maxx, b->x1);
+  }
+  return n;
+}
+} // namespace
+
 SpanLists build_span_lists(const TriangleBatch& batch, int width, int height, Counters& c) {
   SpanLists L;
   L.height = height;
@@ -34,6 +50,7 @@ SpanLists build_span_lists(const TriangleBatch& batch, int width, int height, Co
       if (p.x0 != q.x0) return p.x0 < q.x0;
       return batch.tris[p.tri].id < batch.tris[q.tri].id;
     });
+    L.covered += union_columns(b, e);
   }
   return L;
 }
@@ -45,6 +62,7 @@ ActivePixels zbuffer_spans(const SpanLists& L, const TriangleBatch& batch, const
   A.y0 = 0;
   A.y1 = L.height;
   A.row_begin.assign(std::size_t(L.height) + 1, 0);
+  A.pixels.reserve(L.covered);
   // MSA[x] = 1 + index in the WPA of the pixel at column x; valid only if >= range (§2).
   std::vector<std::uint32_t> msa(width, 0);
   for (int y = 0; y < L.height; ++y) {

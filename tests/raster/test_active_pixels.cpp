@@ -97,6 +97,9 @@ TEST(ActivePixels, EqualsPlainZBufferOnRandomScenes) {
     EXPECT_EQ(c2.wpa_tested + a.count(), c2.pixels_generated);
     EXPECT_EQ(c2.wpa_appended, a.count());
     EXPECT_EQ(c1.wpa_tested + c1.wpa_appended, 0u);
+    // The span lists' covered columns are the WPA's size: its array reserved once, exactly.
+    EXPECT_EQ(L.covered, a.count());
+    EXPECT_EQ(a.pixels.capacity(), a.count());
   }
 }
 
