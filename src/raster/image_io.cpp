@@ -21,6 +21,15 @@ std::vector<float> depth_map(const Framebuffer& fb) {
   return d;
 }
 
+bool same_depth_map(const Framebuffer& fb, const std::vector<float>& map) {
+  const auto& depth = fb.depth();
+  const auto& ids = fb.ids();
+  if (map.size() != depth.size()) return false;
+  for (std::size_t i = 0; i < map.size(); ++i)
+    if (!((ids[i] == kNoTriangle ? 1.0f : depth[i]) == map[i])) return false; // as float ==
+  return true;
+}
+
 void write_depth_exr(const Framebuffer& fb, const std::string& path) {
   const std::vector<float> d = depth_map(fb);
   image_module::write(path, fb.width(), fb.rows().count(), 1, true, d.data());

@@ -12,6 +12,8 @@ namespace zc {
 void write_png(const Framebuffer& fb, const std::string& path);
 // The depth map --depth writes: each pixel's depth, 1.0 (the far plane) where no triangle is.
 std::vector<float> depth_map(const Framebuffer& fb);
+// depth_map(fb) == map, without making the depth map (a megabyte of fresh memory a picture).
+bool same_depth_map(const Framebuffer& fb, const std::vector<float>& map);
 // Writes the depth map as a single-channel float EXR.
 void write_depth_exr(const Framebuffer& fb, const std::string& path);
 // Hex SHA-256 of width, height and the RGB8 pixels, rows top to bottom.

@@ -269,7 +269,7 @@ void add_image_section(nlohmann::json& j, std::vector<FrameImage>& images, const
             drawn ? ReferenceFrame{} : reference_frame(scene, f, cfg.options.frames);
         const ReferenceFrame& ref = drawn ? *drawn : seq;
         same_colour = same_colour && ref.sha256 == shas.back();
-        same_depth = same_depth && ref.depth == depth_map(images[f].image);
+        same_depth = same_depth && same_depth_map(images[f].image, ref.depth);
       }
     }
     img["sha256"] = shas.empty() ? nlohmann::json(nullptr) : nlohmann::json(shas.back());
