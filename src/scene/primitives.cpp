@@ -70,15 +70,22 @@ static LocalMesh build_sphere(int recursion) {
 
 // The unit sphere of each recursion level is built once a process and copied: Blazek's nodes
 // tessellate every sphere they receive, and a scene of N spheres asks for the same mesh N times.
-LocalMesh make_sphere(int recursion) {
+// (A kept mesh is never erased: references to it stay valid as other levels are added.)
+const LocalMesh& sphere_mesh(int recursion, LocalMesh& built) {
   constexpr int kKept = 6; // deeper levels (4^7 * 8 triangles and more) are built each time
-  if (recursion < 0 || recursion > kKept) return build_sphere(recursion);
+  if (recursion < 0 || recursion > kKept) return built = build_sphere(recursion);
   static std::mutex lock;
-  static std::map<int, LocalMesh> built;
+  static std::map<int, LocalMesh> kept;
   const std::lock_guard<std::mutex> hold(lock);
-  auto it = built.find(recursion);
-  if (it == built.end()) it = built.emplace(recursion, build_sphere(recursion)).first;
+  auto it = kept.find(recursion);
+  if (it == kept.end()) it = kept.emplace(recursion, build_sphere(recursion)).first;
   return it->second;
+}
+
+LocalMesh make_sphere(int recursion) {
+  LocalMesh built;
+  const LocalMesh& m = sphere_mesh(recursion, built);
+  return &m == &built ? built : m;
 }
 
 LocalMesh make_spheroid(int recursion, const glm::dvec3& radii) {

@@ -22,6 +22,9 @@ constexpr int kMaxSlices = 4096;
 
 // 8 * 4^recursion triangles, 4^(recursion+1) + 2 vertices.
 LocalMesh make_sphere(int recursion);
+// The same without a copy: the process's kept mesh of that level, or (a level not kept) `built`,
+// into which it is built.
+const LocalMesh& sphere_mesh(int recursion, LocalMesh& built);
 // The sphere stretched to radii (rx, ry, rz); normals are the ellipsoid's gradient.
 LocalMesh make_spheroid(int recursion, const glm::dvec3& radii);
 // 12 triangles, 24 vertices (flat normal per face).

@@ -139,8 +139,9 @@ ObjectSpec parse_object_text(const std::string& line) {
 
 Tessellation tessellate(const ObjectSpec& s, std::uint32_t first_vertex) {
   LocalMesh m;
+  const LocalMesh* mesh = &m; // a sphere: the process's kept one, read without a copy
   if (s.kind == "sphere")
-    m = make_sphere(s.recursion);
+    mesh = &sphere_mesh(s.recursion, m);
   else if (s.kind == "spheroid")
     m = make_spheroid(s.recursion, s.radii);
   else if (s.kind == "cube")
@@ -162,14 +163,17 @@ Tessellation tessellate(const ObjectSpec& s, std::uint32_t first_vertex) {
   const glm::dmat3 N = glm::transpose(glm::inverse(glm::dmat3(M)));
   const bool flip = glm::determinant(glm::dmat3(M)) < 0; // a mirror turns the winding over
   Tessellation t;
-  t.vertices.resize(m.positions.size());
-  for (std::size_t i = 0; i < m.positions.size(); ++i) {
-    t.vertices[i].position = glm::vec3(glm::dvec3(M * glm::dvec4(m.positions[i], 1.0)));
-    glm::dvec3 n = N * m.normals[i];
+  t.vertices.resize(mesh->positions.size());
+  for (std::size_t i = 0; i < mesh->positions.size(); ++i) {
+    t.vertices[i].position = glm::vec3(glm::dvec3(M * glm::dvec4(mesh->positions[i], 1.0)));
+    glm::dvec3 n = N * mesh->normals[i];
     double len = glm::length(n);
     t.vertices[i].normal = glm::vec3(len > 0 ? n / len : glm::dvec3(0, 0, 1));
   }
-  t.triangles = std::move(m.triangles);
+  if (mesh == &m)
+    t.triangles = std::move(m.triangles);
+  else
+    t.triangles = mesh->triangles;
   for (auto& tr : t.triangles) {
     for (auto& v : tr.v)
       v += first_vertex;
