@@ -7,10 +7,12 @@ usage: plot_results.py [--format png|svg|pdf] [--describe OUT.json] RESULTS_DIR
        plot_results.py [--format ...] [--describe OUT.json] --sweep SWEEP.csv X Y OUT
            Y against the swept flag X, one line per combination of the other swept flags
        --gantt REPORT.json OUT (repeatable) draws that space-time diagram (plot_gantt.py) in the
-           same interpreter, and --later calibration draws that part once standard input gives a
-           line: `zcube reproduce` draws all its plots with one process, while its calibration runs
-       --arguments-on-stdin: the arguments after --units come as a line of JSON on standard input
-           (zcube reproduce starts the script, which loads matplotlib, before its simulations)
+           same interpreter; --part NAME (repeatable) draws only those parts of RESULTS_DIR;
+           --jobs N draws up to N figures at once, each in a process forked from this one
+       --arguments-on-stdin: the arguments after --units come as lines of JSON on standard input,
+           each drawn as it arrives (zcube reproduce starts the script, which loads matplotlib,
+           before its simulations, and gives it the calibration's plot and the papers' as soon as
+           their files are written)
 
 --describe writes what every figure shows (titles, axis labels and scales, legend entries, the
 number of series and of out-of-memory marks) as JSON: the tests read the plots from it.
@@ -621,8 +623,111 @@ def sweep(path, x, y, out):
     save(fig, out)
 
 
-def main(argv):
+class Pool:
+    """Draws each figure (a callable) in a process of its own, forked from this one once the
+    plotting modules are loaded, up to `jobs` at once: the figures of `zcube reproduce` then use
+    both cores while its last simulations and its calibration end. With jobs = 1 (or --describe,
+    whose list of figures lives in this process) they are drawn here, one after the other. A figure
+    draws the same bytes in either (Agg's drawing depends on nothing a process learns)."""
+
+    def __init__(self, jobs):
+        self.jobs, self.running, self.failed = jobs, set(), 0
+
+    def draw(self, part, *args):
+        if self.jobs <= 1:
+            part(*args)
+            return
+        while len(self.running) >= self.jobs:
+            self.reap()
+        sys.stdout.flush()
+        sys.stderr.flush()
+        pid = os.fork()
+        if pid == 0:
+            status = 1
+            try:
+                part(*args)
+                status = 0
+            except BaseException:
+                import traceback
+                traceback.print_exc()
+            finally:
+                sys.stdout.flush()
+                sys.stderr.flush()
+                os._exit(status)
+        self.running.add(pid)
+
+    def reap(self):
+        pid, status = os.wait()
+        self.running.discard(pid)
+        self.failed += status != 0
+
+    def wait(self):
+        while self.running:
+            self.reap()
+        if self.failed:
+            sys.exit(f"plot_results.py: {self.failed} figure(s) failed")
+
+
+def warm_up():
+    """Loads the fonts and the Agg renderer once, before the figures are forked (each would load
+    its own): a small figure with text, drawn to memory."""
+    import io
+    fig, ax = subplots(figsize=(2, 2))
+    ax.set_title("warm-up")
+    ax.plot([1, 2], [1, 2], marker="o", label="x")
+    ax.legend()
+    fig.savefig(io.BytesIO(), dpi=110, format="png")
+
+
+# What drawing each part of the reproduce layout costs, roughly (CPU-seconds on this repository's
+# results; a Gantt chart is one chart): the pool draws the slowest first, so that the last figure
+# to end is a short one.
+PART_COST = {"blazek": 0.8, "kurc": 0.55, "compositing": 0.45, "calibration": 0.45, "charles": 0.3,
+             "gantt": 0.2, "fidelity": 0.15}
+
+
+PARTS = ("kurc", "charles", "blazek", "fidelity", "compositing", "calibration")
+
+
+def draw(p, a, pool):
+    """The figures the arguments `a` ask for, handed to the pool (the slowest first when it forks)."""
     global FORMAT, FIGURES
+    FORMAT = a.format
+    if a.describe:
+        FIGURES = []
+    if a.units:
+        for table in json.loads(a.units).values():
+            UNITS.update(table)
+    if not (a.sweep or a.results or a.gantt):
+        p.error("give RESULTS_DIR, --sweep or --gantt")
+    figures = []  # (part name, callable, arguments)
+    if a.gantt:
+        import plot_gantt
+        figures += [("gantt", plot_gantt.chart, (report, out)) for report, out in a.gantt]
+    if a.sweep:
+        figures.append(("sweep", sweep, a.sweep))
+    elif a.results:
+        parts = {"kurc": kurc, "charles": charles, "blazek": blazek, "fidelity": fidelity,
+                 "compositing": compositing, "calibration": calibration}
+        names = [n for n in PARTS if not a.part or n in a.part]
+        figures += [(n, parts[n], (a.results,)) for n in names]
+        for name in ("blazek", "compositing"):
+            if name in names and os.path.isdir(os.path.join(a.results, name + "-quick")):
+                figures.append((name, parts[name], (a.results, name + "-quick")))
+    if pool.jobs > 1:
+        figures.sort(key=lambda f: -PART_COST.get(f[0], 0))
+    for _, part, args in figures:
+        pool.draw(part, *args)
+    if not a.arguments_on_stdin:
+        pool.wait()
+    if a.describe:  # (the figures were drawn here: a pool of one)
+        def write_description(tmp):
+            with open(tmp, "w") as f:
+                json.dump(FIGURES, f, indent=1)
+        save_atomically(a.describe, write_description)
+
+
+def main(argv):
     p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     p.add_argument("--format", choices=("png", "svg", "pdf"), default="png")
     p.add_argument("--units", help="zcube's unit tables as JSON ({kind: {unit: factor}})")
@@ -630,53 +735,29 @@ def main(argv):
     p.add_argument("--sweep", nargs=4, metavar=("CSV", "X", "Y", "OUT"))
     p.add_argument("--gantt", nargs=2, action="append", default=[], metavar=("REPORT", "OUT"),
                    help="also draw that report's space-time diagram (plot_gantt.py)")
-    p.add_argument("--later", action="append", default=[], choices=("calibration",),
-                   help="draw this part of RESULTS_DIR only once a line arrives on standard input "
-                   "(end of input: not at all)")
+    p.add_argument("--part", action="append", choices=PARTS, metavar="PART",
+                   help="draw only this part of RESULTS_DIR (repeatable; %s)" % ", ".join(PARTS))
+    p.add_argument("--jobs", type=int, default=1,
+                   help="draw up to this many figures at once, each in a process of its own")
     p.add_argument("--arguments-on-stdin", action="store_true",
                    help="load the plotting modules first, then read the other arguments from "
-                   "standard input, one line of JSON (a list of strings; end of input: draw "
-                   "nothing): zcube reproduce starts the script before its simulations")
+                   "standard input, lines of JSON (each a list of strings, drawn as it arrives; "
+                   "end of input: done): zcube reproduce starts the script before its "
+                   "simulations")
     p.add_argument("results", nargs="?")
     a = p.parse_args(argv)
-    if a.arguments_on_stdin:
+    if not a.arguments_on_stdin:
+        draw(p, a, Pool(1 if a.describe else a.jobs))
+    else:
         import plot_gantt  # noqa: F401 (loaded now, while the caller computes)
-        line = sys.stdin.readline()
-        if not line:
-            return
-        a = p.parse_args(argv + json.loads(line))
-    FORMAT = a.format
-    if a.describe:
-        FIGURES = []
-    if a.units:
-        for table in json.loads(a.units).values():
-            UNITS.update(table)
-    if a.gantt:
-        import plot_gantt
-        for report, out in a.gantt:
-            plot_gantt.chart(report, out)
-    if a.sweep:
-        sweep(*a.sweep)
-    elif a.results:
-        parts = {"kurc": kurc, "charles": charles, "blazek": blazek, "fidelity": fidelity,
-                 "compositing": compositing, "calibration": calibration}
-        for name, part in parts.items():
-            if name not in a.later:
-                part(a.results)
-        if os.path.isdir(os.path.join(a.results, "blazek-quick")):
-            blazek(a.results, "blazek-quick")
-        if os.path.isdir(os.path.join(a.results, "compositing-quick")):
-            compositing(a.results, "compositing-quick")
-        if a.later and sys.stdin.readline():
-            for name in a.later:
-                parts[name](a.results)
-    elif not a.gantt:
-        p.error("give RESULTS_DIR, --sweep or --gantt")
-    if a.describe:
-        def write_description(tmp):
-            with open(tmp, "w") as f:
-                json.dump(FIGURES, f, indent=1)
-        save_atomically(a.describe, write_description)
+        warm_up()
+        pool = None
+        for line in sys.stdin:
+            a = p.parse_args(argv + json.loads(line))
+            pool = pool or Pool(1 if a.describe else a.jobs)
+            draw(p, a, pool)
+        if pool:
+            pool.wait()
 
 
 if __name__ == "__main__":

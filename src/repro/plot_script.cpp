@@ -91,13 +91,6 @@ void BackgroundPlots::draw(const std::vector<std::string>& args) {
   say(nlohmann::json(args).dump() + "\n"); // one line: JSON escapes any newline in an argument
 }
 
-void BackgroundPlots::go() {
-  say("go\n");
-  if (to_script_ < 0) return;
-  close(to_script_);
-  to_script_ = -1;
-}
-
 void BackgroundPlots::say(const std::string& line) {
   if (to_script_ < 0) return;
   // A script that has already died must not take zcube with it (SIGPIPE): wait() reports it.

@@ -20,9 +20,10 @@ bool run_python_script(const std::string& root, const std::string& script,
                        const std::vector<std::string>& args);
 
 // scripts/plot_results.py (with --units, as run_plot_script) started in the background, its
-// standard input a pipe: it loads matplotlib while the caller goes on, draws once draw() gives it
-// the rest of its arguments, the plots it holds back (--later) once go() says so, and wait() tells
-// whether it succeeded (the destructor waits; without draw(), the script is stopped).
+// standard input a pipe: it loads matplotlib while the caller goes on, and draws the figures each
+// draw() names (the rest of its arguments: a results directory and its parts, Gantt charts) as soon
+// as it is given them, several at once (--jobs); wait() ends its input, waits for the figures and
+// tells whether they were all drawn (the destructor waits; without draw(), the script is stopped).
 class BackgroundPlots {
 public:
   explicit BackgroundPlots(const std::string& root);
@@ -30,7 +31,6 @@ public:
   BackgroundPlots(const BackgroundPlots&) = delete;
   BackgroundPlots& operator=(const BackgroundPlots&) = delete;
   void draw(const std::vector<std::string>& args);
-  void go();
   bool wait();
 
 private:

@@ -12,6 +12,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "repro/background_job.hpp"
 #include "repro/calibrate.hpp"
 #include "repro/gantt_chart.hpp"
 #include "repro/json_file.hpp"
@@ -131,12 +132,16 @@ struct ScratchDir {
   ScratchDir& operator=(const ScratchDir&) = delete;
 };
 
-// plot_results.py's arguments for the whole results directory: each Gantt chart from a report
-// file of its own (in `scratch`), the calibration's plot held back until it is written.
+// plot_results.py's arguments for the given parts of the results directory (a plan's name, or
+// "fidelity", or "calibration"), and for the Gantt charts, each from a report file of its own (in
+// `scratch`).
 std::vector<std::string>
-plot_arguments(const std::vector<std::pair<const nlohmann::json*, std::string>>& charts,
+plot_arguments(const std::vector<std::string>& parts,
+               const std::vector<std::pair<const nlohmann::json*, std::string>>& charts,
                const ReproduceOptions& o, const ScratchDir& scratch) {
-  std::vector<std::string> args = {"--format", o.plot_format, "--later", "calibration"};
+  std::vector<std::string> args = {"--format", o.plot_format, "--jobs", std::to_string(o.jobs)};
+  for (const auto& p : parts)
+    args.insert(args.end(), {"--part", p});
   for (std::size_t i = 0; i < charts.size(); ++i) {
     const auto& [report, path] = charts[i];
     check_gantt_path(path);
@@ -146,6 +151,25 @@ plot_arguments(const std::vector<std::pair<const nlohmann::json*, std::string>>&
   }
   args.push_back(o.out);
   return args;
+}
+
+// The calibration's fit and its validation, written to out/calibration/.
+void reproduce_calibration(const ReproduceOptions& o) {
+  CalibrationOptions c;
+  c.root = o.root;
+  c.jobs = o.jobs;
+  c.verbose = o.verbose;
+  nlohmann::json fit = calibrate(c);
+  // The model selection (`zcube calibrate --select`, five times longer) is not re-run here: its
+  // table is kept when it chose the groups this fit kept physical.
+  const std::string prev = o.out + "/calibration/fit.json";
+  if (std::filesystem::exists(prev)) {
+    const nlohmann::json old = read_json_file(prev, "calibration");
+    if (old.contains("selection") &&
+        old["settings"]["fixed_groups"] == fit["settings"]["fixed_groups"])
+      fit["selection"] = old["selection"];
+  }
+  write_calibration_results(fit, o.out + "/calibration");
 }
 
 } // namespace
@@ -212,9 +236,16 @@ int reproduce(const ReproduceOptions& o) {
     std::cerr << "reproduce: " << cfgs.size() << " simulations, " << o.jobs << " at a time\n";
   const auto progress = o.verbose && o.write ? progress_printer("reproduce", cfgs.size())
                                              : std::function<void(const BatchProgress&)>{};
+  // The calibration needs none of the plans' points: with the local batch and two jobs or more,
+  // it runs beside them in a process of its own, with as many jobs (its batches and the plans'
+  // share the cores: it ends first, its points being short, and its plot is drawn while the plans'
+  // batch runs; after it, as before, a core would idle at the end of each of its fit steps).
+  const bool calibrating = all && o.calibration && o.write;
+  std::optional<BackgroundJob> calibration;
+  if (calibrating && !o.runner && o.jobs >= 2)
+    calibration.emplace([&o] { reproduce_calibration(o); });
   // One interpreter draws every plot: started now, it loads matplotlib (half a CPU-second) while
-  // the simulations run; it draws the Gantt charts and the tables' plots once they are written,
-  // while the calibration runs, and the calibration's once that is written.
+  // the simulations run, and draws each figure once its files are written.
   std::optional<ScratchDir> plot_dir;
   std::optional<BackgroundPlots> plots;
   if (o.plots && o.write) {
@@ -222,7 +253,16 @@ int reproduce(const ReproduceOptions& o) {
                      ("zcube-" + std::to_string(getpid()) + "-plots"));
     plots.emplace(o.root);
   }
-  auto reps = o.runner ? o.runner(cfgs, o.jobs, progress) : simulate_batch(cfgs, o.jobs, progress);
+  bool calibration_drawn = false;
+  const auto draw_calibration = [&] {
+    if (plots && !calibration_drawn) plots->draw(plot_arguments({"calibration"}, {}, o, *plot_dir));
+    calibration_drawn = true;
+  };
+  const auto on_point = [&](const BatchProgress& pr) {
+    if (progress) progress(pr);
+    if (calibration && calibration->finished() && calibration->succeeded()) draw_calibration();
+  };
+  auto reps = o.runner ? o.runner(cfgs, o.jobs, progress) : simulate_batch(cfgs, o.jobs, on_point);
   if (!o.write) return 0;
 
   int status = 0;
@@ -255,29 +295,23 @@ int reproduce(const ReproduceOptions& o) {
     summaries += p.write(r, dir);
     if (!p.name.empty()) name_plots_in(dir + "/README.md", o.plot_format);
   }
-  if (plots) plots->draw(plot_arguments(charts, o, *plot_dir));
-  // The reports are written: freed before the calibration forks its runs (a fork copies the page
-  // tables of the memory its parent holds).
+  if (plots) {
+    std::vector<std::string> parts;
+    for (const auto& p : plans)
+      parts.push_back(p.name.empty() ? "fidelity" : p.name);
+    plots->draw(plot_arguments(parts, charts, o, *plot_dir));
+  }
+  // The reports are written: freed before the calibration, when it runs here, forks its runs (a
+  // fork copies the page tables of the memory its parent holds).
   const std::size_t chart_count = charts.size();
   charts.clear();
   std::vector<nlohmann::json>().swap(reps);
-  if (all && o.calibration) {
-    CalibrationOptions c;
-    c.root = o.root;
-    c.jobs = o.jobs;
-    c.verbose = o.verbose;
-    nlohmann::json fit = calibrate(c);
-    // The model selection (`zcube calibrate --select`, five times longer) is not re-run here: its
-    // table is kept when it chose the groups this fit kept physical.
-    const std::string prev = o.out + "/calibration/fit.json";
-    if (std::filesystem::exists(prev)) {
-      const nlohmann::json old = read_json_file(prev, "calibration");
-      if (old.contains("selection") &&
-          old["settings"]["fixed_groups"] == fit["settings"]["fixed_groups"])
-        fit["selection"] = old["selection"];
-    }
-    write_calibration_results(fit, o.out + "/calibration");
+  if (calibration) {
+    if (const std::string e = calibration->wait(); !e.empty()) throw std::runtime_error(e);
+  } else if (calibrating) {
+    reproduce_calibration(o);
   }
+  if (calibrating) draw_calibration();
   if (all) {
     write_text(o.out + "/README.md", top_readme(o, cfgs.size(), summaries, kept));
     name_plots_in(o.out + "/README.md", o.plot_format);
@@ -286,7 +320,6 @@ int reproduce(const ReproduceOptions& o) {
   if (plots) {
     if (o.verbose)
       std::cerr << "reproduce: drawing the plots and " << chart_count << " space-time diagrams\n";
-    plots->go();
     if (!plots->wait())
       std::cerr << "reproduce: plots not drawn (scripts/plot_results.py failed; it needs "
                    "python3-matplotlib, which scripts/setup.sh installs)\n";
