@@ -9,6 +9,8 @@ OUT/README.md. A point is measured as the median of its runs; the spread is (max
 With OUT/after/predicted/ (the same predictions from a second probe, made after the measured runs),
 the host's steadiness is checked: a point whose two predictions differ by more than a target (a
 judged figure) is not judged, and the exit status is 3 (the README's verdict line says which).
+With OUT/reference.csv (a reference loop timed around the probe and right before and after every
+point), so is a point whose reference moved by more than REF_TOL from the probe's.
 """
 import csv
 import json
@@ -17,6 +19,9 @@ import statistics
 import sys
 
 TOTAL_TOL, PHASE_TOL, PHASE_SHARE = 0.15, 0.25, 0.10
+# A machine slower by x than the probe saw makes a run slower by about x: two thirds of the total's
+# target leaves the model a third of it.
+REF_TOL = 0.10
 
 
 def load_measured(path):
@@ -72,6 +77,22 @@ def drift(before, after, judged):
     return worst, beyond
 
 
+def load_reference(path):
+    """The reference loop's time the probe saw (the median of its rows) and each point's largest
+    relative change from it (before or after the point), or None without reference.csv."""
+    if not os.path.exists(path):
+        return None
+    rows = list(csv.DictReader(open(path)))
+    base = statistics.median(float(r["seconds"]) for r in rows if r["point"] == "probe")
+    moved = {}
+    for r in rows:
+        if r["point"] != "probe":
+            d = float(r["seconds"]) / base - 1
+            if abs(d) >= abs(moved.get(r["point"], 0.0)):
+                moved[r["point"]] = d
+    return moved
+
+
 def main():
     out, cores = sys.argv[1], int(sys.argv[2])
     after_dir = os.path.join(out, "after", "predicted")
@@ -82,6 +103,8 @@ def main():
         for line in open(os.path.join(out, "conditions.txt"))
         if "=" in line
     )
+    reference = load_reference(os.path.join(out, "reference.csv"))
+    worst_ref = 0.0
     shares = {}  # (workload, P) -> [the lowest rank's core share, per run]
     share_csv = os.path.join(out, "core_share.csv")
     if os.path.exists(share_csv):
@@ -131,13 +154,18 @@ def main():
                                  judged_figures)
             if abs(moved) > abs(worst_drift):
                 worst_drift = moved
+        ref = None if reference is None or over else reference.get(f"{name}-{p}")
+        if ref is not None:
+            shaky = shaky or abs(ref) > REF_TOL
+            if abs(ref) > abs(worst_ref):
+                worst_ref = ref
         if not over:
             unsteady += shaky
             passed += ok and not shaky
             failed += not ok and not shaky
         verdict = "-" if over else ("unsteady" if shaky else ("yes" if ok else "no"))
         totals.append(
-            "| %s | %d | %d%s | %s | %s | %s | %s | %s | %s | %s |"
+            "| %s | %d | %d%s | %s | %s | %s | %s | %s | %s | %s | %s |"
             % (
                 name,
                 p,
@@ -150,6 +178,7 @@ def main():
                 verdict,
                 "%.0f %%" % (100 * statistics.median(shares[key])) if key in shares else "",
                 "-" if over or not checked else pct(moved),
+                "-" if ref is None else pct(ref),
             )
         )
         details.append(
@@ -164,18 +193,24 @@ def main():
         for r in rows:
             w.writerow([("" if v is None else (repr(v) if isinstance(v, float) else v)) for v in r])
     probe = open(os.path.join(out, "probe.txt")).read().strip()
+    ref_text = ("" if reference is None else
+                f"; the reference loop's largest change from the probe's {pct(worst_ref)}")
     if not checked:
         steadiness = ("**Verdict: not checked** (no second probe after the measured runs: "
                       "`after/`).")
     elif unsteady:
         steadiness = (f"**Verdict: the host was not steady, {unsteady} point(s) not judged**: the "
                       "probe after the measured runs moves their prediction (a judged figure) by "
-                      f"more than its target (largest change {pct(worst_drift)}); run again on a "
-                      "quiet machine.")
+                      f"more than its target, or the reference loop around them moved by more than "
+                      f"{REF_TOL:.0%} from the probe's (largest changes {pct(worst_drift)}"
+                      f"{ref_text}); run again on a quiet machine.")
     else:
+        ref_ok = ("" if reference is None else
+                  f", and the reference loop around every point is within {REF_TOL:.0%} of the "
+                  "probe's")
         steadiness = ("**Verdict: steady host**: the probe after the measured runs predicts every "
-                      "judged figure within its target of the probe before (largest change "
-                      f"{pct(worst_drift)}).")
+                      f"judged figure within its target of the probe before{ref_ok} (largest "
+                      f"changes {pct(worst_drift)}{ref_text}).")
     with open(os.path.join(out, "README.md"), "w") as f:
         f.write(
             f"""# The MPI backend on this machine against the simulator's prediction
@@ -209,11 +244,14 @@ shared-memory transport copied large messages by {single_copy_text(cond.get('sin
 5. The host's steadiness: `mpirun -np 2 zcube probe` again after the measured runs (`after/`), every
    point predicted again on its platforms; the probe drift is the largest change of a judged figure
    between the two predictions. A point whose drift passes a target (the total's {TOTAL_TOL:.0%}, a
-   phase's {PHASE_TOL:.0%}) measured a machine that changed under it: it is not judged.
+   phase's {PHASE_TOL:.0%}) measured a machine that changed under it: it is not judged. So is a
+   point whose reference loop (`reference.csv`: the sequential z-buffer of the bunny on one
+   process, timed right before and after the probe and right before and after every point) moved
+   by more than {REF_TOL:.0%} from the probe's (the reference drift, the larger of before and after).
    {steadiness}
 
-| workload | P | processes | measured median (s) | spread | predicted (s) | error | targets met | core share | probe drift |
-|---|---|---|---|---|---|---|---|---|---|
+| workload | P | processes | measured median (s) | spread | predicted (s) | error | targets met | core share | probe drift | reference drift |
+|---|---|---|---|---|---|---|---|---|---|---|
 """
         )
         f.write("\n".join(totals) + "\n\n## Phase by phase\n\n" + "\n".join(details))

@@ -4,13 +4,15 @@
 #      platform of this machine for 1, 2 and 4 nodes;
 #   2. predict: every workload simulated on that platform, before anything is measured;
 #   3. measure: every workload run RUNS times on the MPI backend (P = 1, 2, and 4 oversubscribed);
-#   4. steadiness: the probe again after the measured runs, every point predicted again on it;
+#   4. steadiness: a reference loop timed around the probe and right before and after every
+#      point, and the probe again after the measured runs, every point predicted again on it;
 #   5. compare: medians of the measured runs, their spread, phase by phase (scripts/mpi_compare.py).
-# Nothing of the measured runs enters the prediction. A point whose two probes' predictions differ
-# by more than a target measured a host that changed under it: it is not judged, and the script
-# exits 3 after writing the README (its verdict line says which points). About 6 minutes on 2 idle
-# cores, the probe's two runs included (elapsed_s in conditions.txt); on a machine others load, run
-# it later (the load average is recorded).
+# Nothing of the measured runs enters the prediction. A point whose reference loop moved from the
+# probe's, or whose two probes' predictions differ by more than a target, measured a host that
+# changed under it: it is not judged, and the script exits 3 after writing the README (its verdict
+# line says which points). About 7-8 minutes on 2 idle cores, the probe's two runs and the
+# reference loops included (elapsed_s in conditions.txt); on a machine others load, run it later
+# (the load average is recorded).
 # usage: scripts/mpi_vs_model.sh [zcube=build/zcube] [out=results/mpi]
 #   RUNS=5 (runs per point), QUICK=1 (small workloads, one run each: tests/mpi),
 #   ZCUBE_MPI_CLOCK=cpu (time phases on the processes' CPU time, on a machine others load)
@@ -34,7 +36,9 @@ export OMPI_MCA_btl_vader_single_copy_mechanism=$single_copy
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# name|extra ranks (a host computer)|arguments. Each takes 1-5 s on one rank of a 2020s core.
+# name|extra ranks (a host computer)|arguments. Each takes 1-5 s on one rank of a 2020s core
+# (Kurc's on twelve bunnies: one bunny took 0.3 s at 5120x5120, and a larger picture needs more
+# memory than two ranks should take: 1.7 GB a rank here).
 if [ "${QUICK:-0}" = 1 ]; then
   runs=1
   workloads=("elastic|0|--algorithm elastic --scene scenes/bunny.json --size 256x256 --frames 2"
@@ -42,12 +46,14 @@ if [ "${QUICK:-0}" = 1 ]; then
     "zbuf-exc|0|--algorithm zbuf-exc --scene scenes/kurc/2pot.json --size 512x512"
     "node-initiated|1|--algorithm node-initiated --scene scenes/blazek/thesis_spheres_16.json --size 256x256")
   seconds=0.02
+  reference_args="--scene scenes/bunny.json --size 256x256 --frames 2"
 else
   workloads=("elastic|0|--algorithm elastic --scene scenes/bunny.json --size 1024x1024 --frames 40"
-    "pair-rs|0|--algorithm pair-rs --scene scenes/bunny.json --size 5120x5120"
-    "zbuf-exc|0|--algorithm zbuf-exc --scene scenes/bunny.json --size 5120x5120"
+    "pair-rs|0|--algorithm pair-rs --scene scenes/bunnies.json --size 5120x5120"
+    "zbuf-exc|0|--algorithm zbuf-exc --scene scenes/bunnies.json --size 5120x5120"
     "node-initiated|1|--algorithm node-initiated --scene scenes/blazek/thesis_spheres_1024.json --size 512x512")
   seconds=0.2
+  reference_args="--scene scenes/bunny.json --size 1024x1024 --frames 8"
 fi
 nodes=(1 2 4)
 start=$(date +%s)
@@ -62,10 +68,27 @@ start=$(date +%s)
   echo "single_copy=$single_copy"
 } >"$out/conditions.txt"
 
+# The reference loop (reference.csv): the sequential z-buffer of the bunny (scattered triangles,
+# far lines: CPU and memory as the workloads use them) on the MPI backend, one process, about
+# 0.2 s. Timed right before and after the probe (what the probe saw) and right before
+# and after every measured point: a point whose reference moved from the probe's measured a machine
+# that changed since the probe (mpi_compare.py does not judge it).
+echo "point,when,seconds" >"$out/reference.csv"
+reference() { # point before|after
+  # shellcheck disable=SC2086
+  mpirun -np 1 "$zcube" run --backend mpi --algorithm sequential $reference_args \
+    --report "$tmp/ref.json" >/dev/null
+  python3 -c 'import json, sys; print(sys.argv[2] + "," + sys.argv[3] + "," +
+    repr(json.load(open(sys.argv[1]))["virtual_time_s"]))' "$tmp/ref.json" "$1" "$2" \
+    >>"$out/reference.csv"
+}
+
 # 1. The probe (two ranks: the network needs a peer; the CPU loops run on rank 0 alone, for the
 # platform of one node, then on both at once, averaged, for the platforms of several).
+reference probe before
 mpirun -np 2 "$zcube" probe --out "$out/cluster.xml" --nodes 1,2,4 --json "$out/probe.json" \
   --seconds "$seconds" >"$out/probe.txt"
+reference probe after
 
 # 2. Predictions, before any measured run.
 predict() { # platforms-stem reports-dir
@@ -95,6 +118,7 @@ for w in "${workloads[@]}"; do
   IFS='|' read -r name host args <<<"$w"
   for p in "${nodes[@]}"; do
     np=$((p + host))
+    reference "$name-$p" before
     for i in $(seq 1 "$runs"); do
       # shellcheck disable=SC2086
       mpirun -np $np "$zcube" run --backend mpi $args --report "$tmp/m.json" >/dev/null
@@ -110,6 +134,7 @@ with open(out + "/core_share.csv", "a") as f:
     print(f"{name},{p},{np},{i},{j['host']['core_share']!r}", file=f)
 PY
     done
+    reference "$name-$p" after
   done
 done
 echo "load_after=$(cut -d' ' -f1-3 /proc/loadavg)" >>"$out/conditions.txt"

@@ -167,7 +167,7 @@ validate)
   rc=$?
   [ $rc = 0 ] || [ $rc = 3 ] || bad "mpi_vs_model.sh: exit $rc: $(tail -3 "$tmp/out")"
   for f in probe.json cluster-1.xml cluster-2.xml cluster-4.xml measured.csv core_share.csv \
-    comparison.csv README.md predicted/pair-rs-1.json predicted/node-initiated-2.json \
+    comparison.csv README.md reference.csv predicted/pair-rs-1.json predicted/node-initiated-2.json \
     after/probe.json after/predicted/zbuf-exc-2.json; do
     [ -s "$tmp/v/$f" ] || bad "mpi_vs_model.sh wrote no $f"
   done
@@ -189,14 +189,18 @@ assert {(r["workload"], r["nodes"]) for r in shares} == want, "core shares: " + 
 assert all(0 < float(r["core_share"]) < 4 for r in shares), shares
 readme = open(sys.argv[1].replace("comparison.csv", "README.md")).read()
 import re
-assert "| targets met | core share | probe drift |" in readme, "no core share or drift column"
-rows = re.findall(r"\| (yes|no|unsteady|-) \| [0-9]+ % \| ([-+][0-9.]+ %|-) \|$", readme, re.M)
-assert len(rows) == 12, "core shares or probe drifts missing"
+assert "| targets met | core share | probe drift | reference drift |" in readme, "no drift columns"
+rows = re.findall(r"\| (yes|no|unsteady|-) \| [0-9]+ % \| ([-+][0-9.]+ %|-) \| ([-+][0-9.]+ %|-) \|$",
+                  readme, re.M)
+assert len(rows) == 12, "core shares or drifts missing"
 # A point not judged for an unsteady host is said so, and the verdict line matches the table.
 verdict = re.search(r"\*\*Verdict: (steady host|the host was not steady)", readme)
 assert verdict, "no steadiness verdict"
-assert (verdict.group(1) == "steady host") == all(v != "unsteady" for v, _ in rows), rows
-assert all((v == "-") == (d == "-") for v, d in rows), "a drift at every judged point: " + str(rows)
+assert (verdict.group(1) == "steady host") == all(v != "unsteady" for v, _, _ in rows), rows
+assert all((v == "-") == (d == "-") == (r == "-") for v, d, r in rows), "drifts: " + str(rows)
+# The reference loop: around the probe and around every point (before and after).
+refs = list(csv.DictReader(open(sys.argv[1].replace("comparison.csv", "reference.csv"))))
+assert len(refs) == 2 + 2 * 12 and all(float(r["seconds"]) > 0 for r in refs), refs
 PY
     [ "$rc" = 3 ] && ! grep -q "not steady" "$tmp/v/README.md" && bad "exit 3 without its verdict"
   fi
