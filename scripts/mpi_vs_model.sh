@@ -53,7 +53,7 @@ else
     "zbuf-exc|0|--algorithm zbuf-exc --scene scenes/bunnies.json --size 5120x5120"
     "node-initiated|1|--algorithm node-initiated --scene scenes/blazek/thesis_spheres_1024.json --size 512x512")
   seconds=0.2
-  reference_args="--scene scenes/bunny.json --size 1024x1024 --frames 8"
+  reference_args="--scene scenes/bunny.json --size 1024x1024 --frames 16"
 fi
 nodes=(1 2 4)
 start=$(date +%s)
@@ -70,9 +70,9 @@ start=$(date +%s)
 
 # The reference loop (reference.csv): the sequential z-buffer of the bunny (scattered triangles,
 # far lines: CPU and memory as the workloads use them) on the MPI backend, one process, about
-# 0.2 s. Timed right before and after the probe (what the probe saw) and right before
-# and after every measured point: a point whose reference moved from the probe's measured a machine
-# that changed since the probe (mpi_compare.py does not judge it).
+# 0.4 s (long against the clock's noise). Timed right before and after the probe (what the probe
+# saw) and right before and after every measured point: a point whose reference moved from the
+# probe's measured a machine that changed since the probe (mpi_compare.py does not judge it).
 echo "point,when,seconds" >"$out/reference.csv"
 reference() { # point before|after
   # shellcheck disable=SC2086
