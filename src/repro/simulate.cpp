@@ -15,6 +15,7 @@
 #include "repro/paper_figures.hpp"
 #include "run/report.hpp"
 #include "scene/load.hpp"
+#include "sim/platform_load.hpp"
 #include "sim/replay.hpp"
 #include "sim/simulation.hpp"
 
@@ -283,6 +284,24 @@ replaying_batch(const std::vector<SimConfig>& points, int jobs,
 
 } // namespace
 
+namespace {
+
+// Each platform file the points name checked once here, before the batch forks: the forked
+// simulations find its text checked and skip the checks. A file that fails is left to its
+// simulations, which report the error as before.
+void check_platform_files(const std::vector<SimConfig>& points) {
+  std::set<std::string> done;
+  for (const auto& p : points) {
+    if (!is_platform_file(p.machine) || !done.insert(p.machine).second) continue;
+    try {
+      check_platform_file(p.machine);
+    } catch (const std::exception&) {
+    }
+  }
+}
+
+} // namespace
+
 nlohmann::json simulate_point(const SimConfig& cfg) {
   SimResult r = run_simulation(with_batch_args(cfg), cached_scene(cfg));
   attach_paper_figures(r.report);
@@ -295,6 +314,7 @@ simulate_batch(const std::vector<SimConfig>& points, int jobs,
   drop_unused_scenes(points);
   preload_scenes(points, jobs);
   prepare_references(points, jobs);
+  check_platform_files(points);
   const std::vector<std::size_t> order = longest_first(points);
   std::vector<SimConfig> sorted;
   for (const std::size_t i : order)

@@ -182,17 +182,43 @@ void load_platform_text(sg::Engine& e, const std::string& xml, const std::string
   ::close(fd);
 }
 
-void load_platform_file(sg::Engine& e, const std::string& path) {
+bool is_platform_file(const std::string& machine) {
+  return machine.size() > 4 && machine.ends_with(".xml");
+}
+
+namespace {
+
+// The platform texts this process has checked, by path. A batch's parent checks each file once
+// before it forks its simulations (check_platform_file), and each forked simulation, finding
+// the same text under the same path, skips the regular-expression scans: they were most of the
+// host time of a short simulation's platform load (a calibration step runs twenty points on one
+// file).
+std::map<std::string, std::string>& checked_texts() {
+  static std::map<std::string, std::string> texts;
+  return texts;
+}
+
+} // namespace
+
+void check_platform_file(const std::string& path) {
   check_input_file(path);
   std::ifstream f(path);
   std::stringstream text;
   text << f.rdbuf();
   if (!f) throw InputError(path, 0, "cannot read the file");
-  check_clusters(text.str(), path);
-  check_zones(text.str(), path);
-  check_units(text.str(), path);
-  check_zcube_properties(text.str(), path);
-  check_declared_routes(text.str(), path);
+  std::string xml = text.str();
+  const auto known = checked_texts().find(path);
+  if (known != checked_texts().end() && known->second == xml) return;
+  check_clusters(xml, path);
+  check_zones(xml, path);
+  check_units(xml, path);
+  check_zcube_properties(xml, path);
+  check_declared_routes(xml, path);
+  checked_texts()[path] = std::move(xml);
+}
+
+void load_platform_file(sg::Engine& e, const std::string& path) {
+  check_platform_file(path);
   load(e, path, path);
 }
 

@@ -36,6 +36,14 @@ void declare_platform_flags();
 void load_platform_text(simgrid::s4u::Engine& e, const std::string& xml, const std::string& label);
 void load_platform_file(simgrid::s4u::Engine& e, const std::string& path);
 
+// Whether `machine` (a --machine argument) names a platform file rather than a built-in machine.
+bool is_platform_file(const std::string& machine);
+
+// The checks load_platform_file makes before SimGrid reads the file (InputError naming the file
+// and the reason). A text this process has checked under the same path, or the process that
+// forked it, is not checked again.
+void check_platform_file(const std::string& path);
+
 PlatformModel read_platform(const simgrid::s4u::Engine& e, const std::string& label);
 
 // The what-if overrides, then the links set to what the fidelities need: bandwidth from the model,

@@ -78,7 +78,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   // Platform: a built-in machine is generated on the fly for any P (`zcube platform` writes the
   // same text), a path is loaded as given.
   std::string platform_label;
-  const bool is_file = cfg.machine.size() > 4 && cfg.machine.ends_with(".xml");
+  const bool is_file = is_platform_file(cfg.machine);
   std::string builtin_xml;
   if (is_file) {
     check_input_file(cfg.machine);

@@ -18,6 +18,7 @@
 #include "machine/platform_xml.hpp"
 #include "machine/topology.hpp"
 #include "machine/units.hpp"
+#include "sim/platform_load.hpp"
 #include "sim_fixtures.hpp"
 #include "util/error.hpp"
 
@@ -119,4 +120,25 @@ TEST(Platforms, SimGridRoutesAreTheTopologyRoutes) {
     });
     EXPECT_EQ(r["status"], "ok") << P << " " << topology_name(topo) << ": " << r.value("error", "");
   }
+}
+
+// A batch's parent checks each platform file once and its forked simulations skip the checks
+// for the same text: a file edited after its check (same path, new text) is checked again.
+TEST(Platforms, AFileEditedAfterItsCheckIsCheckedAgain) {
+  const std::string path = edited_platform("ipsc2", 4, Topology::Cube, {});
+  ASSERT_NO_THROW(check_platform_file(path));
+  ASSERT_NO_THROW(check_platform_file(path)); // the same text: skipped, still fine
+  std::string x = platform_xml(machine_spec("ipsc2"), 4, Topology::Cube);
+  const auto at = x.find("bw=\"");
+  ASSERT_NE(at, std::string::npos);
+  const auto end = x.find('"', at + 4);
+  x.replace(at, end + 1 - at, "bw=\"2.8\""); // a bare number: no unit
+  std::ofstream(path) << x;
+  try {
+    check_platform_file(path);
+    ADD_FAILURE() << "an edited file with a bare bandwidth was not checked again";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+  std::filesystem::remove(path);
 }
