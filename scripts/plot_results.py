@@ -686,7 +686,10 @@ PART_COST = {"blazek": 0.8, "kurc": 0.55, "compositing": 0.45, "calibration": 0.
              "gantt": 0.2, "fidelity": 0.15}
 
 
-PARTS = ("kurc", "charles", "blazek", "fidelity", "compositing", "calibration")
+# The parts of the reproduce layout: a directory each (fidelity: fidelity.csv). The -quick ones are
+# those a run without --full writes beside a kept --full directory.
+PARTS = ("kurc", "charles", "blazek", "fidelity", "compositing", "calibration", "blazek-quick",
+         "compositing-quick")
 
 
 def draw(p, a, pool):
@@ -709,11 +712,14 @@ def draw(p, a, pool):
     elif a.results:
         parts = {"kurc": kurc, "charles": charles, "blazek": blazek, "fidelity": fidelity,
                  "compositing": compositing, "calibration": calibration}
-        names = [n for n in PARTS if not a.part or n in a.part]
-        figures += [(n, parts[n], (a.results,)) for n in names]
-        for name in ("blazek", "compositing"):
-            if name in names and os.path.isdir(os.path.join(a.results, name + "-quick")):
-                figures.append((name, parts[name], (a.results, name + "-quick")))
+        for name in PARTS:
+            if a.part and name not in a.part:
+                continue
+            if not name.endswith("-quick"):
+                figures.append((name, parts[name], (a.results,)))
+            elif os.path.isdir(os.path.join(a.results, name)):  # blazek-quick: drawn by blazek()
+                base = name[:-len("-quick")]
+                figures.append((base, parts[base], (a.results, name)))
     if pool.jobs > 1:
         figures.sort(key=lambda f: -PART_COST.get(f[0], 0))
     for _, part, args in figures:

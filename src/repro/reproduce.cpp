@@ -132,8 +132,8 @@ struct ScratchDir {
   ScratchDir& operator=(const ScratchDir&) = delete;
 };
 
-// plot_results.py's arguments for the given parts of the results directory (a plan's name, or
-// "fidelity", or "calibration"), and for the Gantt charts, each from a report file of its own (in
+// plot_results.py's arguments for the given parts of the results directory (a plan's directory,
+// "fidelity" or "calibration"), and for the Gantt charts, each from a report file of its own (in
 // `scratch`).
 std::vector<std::string>
 plot_arguments(const std::vector<std::string>& parts,
@@ -296,9 +296,11 @@ int reproduce(const ReproduceOptions& o) {
     if (!p.name.empty()) name_plots_in(dir + "/README.md", o.plot_format);
   }
   if (plots) {
+    // The plots of what this run wrote: a directory kept because it holds more (the --full
+    // tables) keeps its plots too, drawn by the run that wrote its tables.
     std::vector<std::string> parts;
-    for (const auto& p : plans)
-      parts.push_back(p.name.empty() ? "fidelity" : p.name);
+    for (std::size_t k = 0; k < plans.size(); ++k)
+      parts.push_back(plans[k].name.empty() ? "fidelity" : dirs[k].substr(o.out.size() + 1));
     plots->draw(plot_arguments(parts, charts, o, *plot_dir));
   }
   // The reports are written: freed before the calibration, when it runs here, forks its runs (a
