@@ -122,6 +122,30 @@ struct StopSignals {
   _exit(128 + sig);
 }
 
+// The reports of a batch, held compactly while it runs (CBOR: a third of a parsed report's
+// memory): every fork copies the page tables of the memory the parent holds, and the parent
+// writing to pages a child shares copies them, so the parent's memory should not grow with the
+// reports it has received. Unpacked, in order, once the batch is done (CBOR gives back every value
+// exactly).
+class PackedReports {
+public:
+  explicit PackedReports(std::size_t n) : packed_(n) {}
+  void set(std::size_t i, const nlohmann::json& report) {
+    packed_[i] = nlohmann::json::to_cbor(report);
+  }
+  std::vector<nlohmann::json> unpack() {
+    std::vector<nlohmann::json> out(packed_.size());
+    for (std::size_t i = 0; i < packed_.size(); ++i) {
+      if (!packed_[i].empty()) out[i] = nlohmann::json::from_cbor(packed_[i]);
+      std::vector<std::uint8_t>().swap(packed_[i]);
+    }
+    return out;
+  }
+
+private:
+  std::vector<std::vector<std::uint8_t>> packed_;
+};
+
 } // namespace
 
 int default_jobs() {
@@ -187,7 +211,7 @@ void run_jobs(int jobs, const NextJob& next, const JobDone& done) {
 std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int jobs,
                                       const PointRunner& run_point,
                                       const std::function<void(const BatchProgress&)>& progress) {
-  std::vector<nlohmann::json> reports(points.size());
+  PackedReports reports(points.size());
   BatchProgress pr;
   pr.total = points.size();
   std::size_t next = 0;
@@ -199,11 +223,11 @@ std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int 
   run_jobs(jobs, next_job, [&](Child& c) {
     nlohmann::json rep = finish(c);
     if (rep.value("status", "error") == "error") ++pr.failed;
-    reports[c.job.index] = std::move(rep);
+    reports.set(c.job.index, rep);
     ++pr.done;
     if (progress) progress(pr);
   });
-  return reports;
+  return reports.unpack();
 }
 
 namespace {
@@ -312,7 +336,7 @@ std::vector<nlohmann::json>
 run_batch_replaying(const std::vector<SimConfig>& points, int jobs, const ReplayRunner& runner,
                     TraceStore& traces, const std::function<void(const BatchProgress&)>& progress,
                     ReplayCounts* counts) {
-  std::vector<nlohmann::json> reports(points.size());
+  PackedReports reports(points.size());
   BatchProgress pr;
   pr.total = points.size();
   ReplaySchedule schedule(points, runner, traces);
@@ -327,12 +351,12 @@ run_batch_replaying(const std::vector<SimConfig>& points, int jobs, const Replay
     nlohmann::json rep;
     if (!schedule.done(c, rep)) return;
     if (rep.value("status", "error") == "error") ++pr.failed;
-    reports[c.job.index] = std::move(rep);
+    reports.set(c.job.index, rep);
     ++pr.done;
     if (progress) progress(pr);
   });
   if (counts) *counts = schedule.counts;
-  return reports;
+  return reports.unpack();
 }
 
 } // namespace zc
