@@ -4,10 +4,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#include <immintrin.h>
-#endif
-
+#include "raster/avx2_lanes.hpp"
 #include "raster/zbuffer.hpp"
 #include "util/record_io.hpp"
 
@@ -30,45 +27,35 @@ std::size_t union_columns(std::vector<SpanRecord>::const_iterator b,
 } // namespace
 
 namespace {
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#ifdef ZC_HAVE_AVX2_LANES
 bool has_avx2() {
-  static const bool yes = __builtin_cpu_supports("avx2");
-  return yes;
+  return avx2::available();
 }
 
 // The untextured pixels [x0, x1] of a row appended to the WPA eight at a time, bit for bit what
-// RowShader's depth and color give (as the frame buffer's flat_span_avx2, raster/zbuffer.cpp: each
-// lane a double multiply then add rounded to float, the float multiply by kd, unit_to_byte's clamp
-// as max then min, no fused multiply-add). Pixel by pixel, a written pixel's colour (clamps and
-// conversions) took about 63 instructions, two thirds of an appended pixel's; the frame buffer's
-// loop, on which the probe prices a written pixel, spends 11.
-__attribute__((target("avx2"))) __m256 plane8(double a0, double ax, int x) {
-  const __m256d xa = _mm256_add_pd(_mm256_set1_pd(double(x)), _mm256_setr_pd(0, 1, 2, 3));
-  const __m256d xb = _mm256_add_pd(xa, _mm256_set1_pd(4.0));
-  const __m256d a = _mm256_set1_pd(a0), k = _mm256_set1_pd(ax);
-  const __m128 lo = _mm256_cvtpd_ps(_mm256_add_pd(a, _mm256_mul_pd(k, xa)));
-  const __m128 hi = _mm256_cvtpd_ps(_mm256_add_pd(a, _mm256_mul_pd(k, xb)));
-  return _mm256_insertf128_ps(_mm256_castps128_ps256(lo), hi, 1);
-}
-
-__attribute__((target("avx2"))) __m256i to_bytes8(__m256 c, float kd) {
-  c = _mm256_mul_ps(c, _mm256_set1_ps(kd));
-  const __m256 v = _mm256_min_ps(_mm256_max_ps(c, _mm256_setzero_ps()), _mm256_set1_ps(1.f));
-  return _mm256_cvttps_epi32(
-      _mm256_add_ps(_mm256_mul_ps(v, _mm256_set1_ps(255.f)), _mm256_set1_ps(0.5f)));
-}
-
+// RowShader's depth and color give (raster/avx2_lanes.hpp, as the frame buffer's span loop).
+// Pixel by pixel, a written pixel's colour (clamps and conversions) took about 63 instructions,
+// two thirds of an appended pixel's; the frame buffer's loop, on which the probe prices a written
+// pixel, spends 11.
 __attribute__((target("avx2"))) void append_flat_avx2(const RowShader& rs, int x0, int x1,
                                                       std::vector<WinningPixel>& wpa,
                                                       std::uint32_t* msa) {
   const ScreenTriangle& t = *rs.t;
+  const __m256d zax = _mm256_set1_pd(t.z.ax), rax = _mm256_set1_pd(t.r.ax);
+  const __m256d gax = _mm256_set1_pd(t.g.ax), bax = _mm256_set1_pd(t.b.ax);
+  const __m256 kr = _mm256_set1_ps(rs.kd.x), kg = _mm256_set1_ps(rs.kd.y);
+  const __m256 kb = _mm256_set1_ps(rs.kd.z);
   alignas(32) float z[8];
   alignas(32) std::int32_t r[8], g[8], b[8];
   for (int x = x0; x <= x1; x += 8) {
-    _mm256_store_ps(z, plane8(rs.z0, t.z.ax, x));
-    _mm256_store_si256(reinterpret_cast<__m256i*>(r), to_bytes8(plane8(rs.r0, t.r.ax, x), rs.kd.x));
-    _mm256_store_si256(reinterpret_cast<__m256i*>(g), to_bytes8(plane8(rs.g0, t.g.ax, x), rs.kd.y));
-    _mm256_store_si256(reinterpret_cast<__m256i*>(b), to_bytes8(plane8(rs.b0, t.b.ax, x), rs.kd.z));
+    const avx2::Columns xs = avx2::columns8(x);
+    _mm256_store_ps(z, avx2::plane8(rs.z0, zax, xs));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(r),
+                       avx2::to_bytes8(_mm256_mul_ps(avx2::plane8(rs.r0, rax, xs), kr)));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(g),
+                       avx2::to_bytes8(_mm256_mul_ps(avx2::plane8(rs.g0, gax, xs), kg)));
+    _mm256_store_si256(reinterpret_cast<__m256i*>(b),
+                       avx2::to_bytes8(_mm256_mul_ps(avx2::plane8(rs.b0, bax, xs), kb)));
     const int n = std::min(8, x1 - x + 1);
     for (int k = 0; k < n; ++k) {
       wpa.push_back({z[k],

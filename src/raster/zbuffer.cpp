@@ -2,9 +2,7 @@
 
 #include <cstring>
 
-#if defined(__x86_64__)
-#include <immintrin.h>
-#endif
+#include "raster/avx2_lanes.hpp"
 
 namespace zc {
 
@@ -46,8 +44,7 @@ EdgeWalk::EdgeWalk(const ScreenTriangle& t, int e, int y, int stride) {
 
 bool NarrowScan::init(const ScreenTriangle& t, const RowSet& rows, int y, int yend) {
 #ifdef ZC_NARROW_SCAN_AVX2
-  static const bool avx2 = __builtin_cpu_supports("avx2");
-  if (!avx2 || t.bx1 < t.bx0 || t.bx1 - t.bx0 >= kMaxColumns) return false;
+  if (!avx2::available() || t.bx1 < t.bx0 || t.bx1 - t.bx0 >= kMaxColumns) return false;
   x0_ = t.bx0;
   columns_ = t.bx1 - t.bx0 + 1;
   y_ = y;
@@ -156,26 +153,9 @@ void flat_span(const FlatSpan& s, const double (&row)[4], int x0, int x1, std::s
   }
 }
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#ifdef ZC_HAVE_AVX2_LANES
 #define ZC_FLAT_SPAN_AVX2 1
-// The same pixels eight at a time with AVX2, bit for bit: each lane does flat_span's operations in
-// its order and precision (double multiply then add, rounded to float, float multiply; no fused
-// multiply-add, which would round once instead of twice). max(c, 0) then min(, 1) is unit_to_byte's
-// clamp, NaN and -0 included (MAXPS returns its second operand for NaN and for two zeros).
-__attribute__((target("avx2"))) inline __m256 plane8(double a0, __m256d ax, __m256d xa,
-                                                     __m256d xb) {
-  const __m256d a = _mm256_set1_pd(a0);
-  const __m128 lo = _mm256_cvtpd_ps(_mm256_add_pd(a, _mm256_mul_pd(ax, xa)));
-  const __m128 hi = _mm256_cvtpd_ps(_mm256_add_pd(a, _mm256_mul_pd(ax, xb)));
-  return _mm256_insertf128_ps(_mm256_castps128_ps256(lo), hi, 1);
-}
-
-__attribute__((target("avx2"))) inline __m256i to_bytes8(__m256 c) {
-  const __m256 v = _mm256_min_ps(_mm256_max_ps(c, _mm256_setzero_ps()), _mm256_set1_ps(1.f));
-  return _mm256_cvttps_epi32(
-      _mm256_add_ps(_mm256_mul_ps(v, _mm256_set1_ps(255.f)), _mm256_set1_ps(0.5f)));
-}
-
+// flat_span's pixels eight at a time (raster/avx2_lanes.hpp: bit for bit the scalar loop).
 __attribute__((target("avx2"))) void flat_span_avx2(const FlatSpan& s, const double (&row)[4],
                                                     int x0, int x1, std::size_t i,
                                                     std::uint64_t& written, std::uint64_t& first) {
@@ -192,9 +172,8 @@ __attribute__((target("avx2"))) void flat_span_avx2(const FlatSpan& s, const dou
                                          1, 2, 4, 5, 6, 8, 9, 10, 12, 13, 14, -1, -1, -1, -1);
   for (int x = x0; x <= x1; x += 8, i += 8) {
     const __m256i live = _mm256_cmpgt_epi32(_mm256_set1_epi32(x1 - x + 1), lane);
-    const __m256d xa = _mm256_add_pd(_mm256_set1_pd(double(x)), _mm256_setr_pd(0, 1, 2, 3));
-    const __m256d xb = _mm256_add_pd(xa, _mm256_set1_pd(4.0));
-    const __m256 z = plane8(row[0], zax, xa, xb);
+    const avx2::Columns xs = avx2::columns8(x);
+    const __m256 z = avx2::plane8(row[0], zax, xs);
     const __m256 zs = _mm256_maskload_ps(s.depth + i, live);
     const __m256i ids = _mm256_maskload_epi32(reinterpret_cast<const int*>(s.ids + i), live);
     // in_front: z < zs, or z == zs and id < ids (unsigned: compared with the sign bit flipped).
@@ -208,9 +187,9 @@ __attribute__((target("avx2"))) void flat_span_avx2(const FlatSpan& s, const dou
     if (m == 0) continue;
     // Each lane's colour as r | g << 8 | b << 16 (the bytes are 0..255), then the three bytes of
     // each of a 128-bit half's four pixels packed into its low 12 bytes.
-    const __m256i r = to_bytes8(_mm256_mul_ps(plane8(row[1], rax, xa, xb), kr));
-    const __m256i g = to_bytes8(_mm256_mul_ps(plane8(row[2], gax, xa, xb), kg));
-    const __m256i b = to_bytes8(_mm256_mul_ps(plane8(row[3], bax, xa, xb), kb));
+    const __m256i r = avx2::to_bytes8(_mm256_mul_ps(avx2::plane8(row[1], rax, xs), kr));
+    const __m256i g = avx2::to_bytes8(_mm256_mul_ps(avx2::plane8(row[2], gax, xs), kg));
+    const __m256i b = avx2::to_bytes8(_mm256_mul_ps(avx2::plane8(row[3], bax, xs), kb));
     const __m256i px =
         _mm256_or_si256(r, _mm256_or_si256(_mm256_slli_epi32(g, 8), _mm256_slli_epi32(b, 16)));
     std::uint8_t* const out = s.rgb + 3 * i;
@@ -237,10 +216,6 @@ __attribute__((target("avx2"))) void flat_span_avx2(const FlatSpan& s, const dou
   }
 }
 
-bool has_avx2() {
-  static const bool yes = __builtin_cpu_supports("avx2");
-  return yes;
-}
 #endif
 
 FlatSpan flat(const ScreenTriangle& t, const ShadeContext& ctx, Framebuffer& fb) {
@@ -262,7 +237,7 @@ void flat_row(const ScreenTriangle& t, const FlatSpan& s, int y, int x0, int x1,
   const std::size_t i = fb.index(x0, y);
   fb.ready_row(y);
 #ifdef ZC_FLAT_SPAN_AVX2
-  if (has_avx2() && x1 - x0 >= 2) { // shorter spans: the scalar loop measured faster
+  if (avx2::available() && x1 - x0 >= 2) { // shorter spans: the scalar loop measured faster
     flat_span_avx2(s, row, x0, x1, i, written, first);
     return;
   }
