@@ -18,6 +18,7 @@
 #include <thread>
 
 #include "util/fork_pipe.hpp"
+#include "util/huge_pages.hpp"
 
 namespace zc {
 
@@ -164,6 +165,7 @@ void run_jobs(int jobs, const NextJob& next, const JobDone& done) {
   jobs = std::max(1, jobs);
   g_stop_signal = 0;
   const StopSignals stop_signals;
+  collapse_into_huge_pages(); // what the parent holds now: page tables each fork copies fast
   for (;;) {
     if (g_stop_signal) stop_batch(running);
     while (int(running.size()) < jobs) {
