@@ -7,6 +7,7 @@
 
 #include <cerrno>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <deque>
@@ -38,19 +39,30 @@ struct Child {
   std::string out;
 };
 
-// A point's report, or the error, as text for the pipe.
-std::string report_text(const std::function<nlohmann::json()>& run) {
+// What a child writes to its pipe: the size of its report (8 bytes, the host's order), the report
+// as CBOR (binary: no number is printed by the child nor read back by the parent, and every value
+// comes back exactly), then, from a recording run, its trace.
+std::string frame(const nlohmann::json& report) {
+  const std::vector<std::uint8_t> cbor = nlohmann::json::to_cbor(report);
+  const std::uint64_t n = cbor.size();
+  std::string out(sizeof n, '\0');
+  std::memcpy(out.data(), &n, sizeof n);
+  return out.append(cbor.begin(), cbor.end());
+}
+
+// A point's report, or the error, framed for the pipe.
+std::string report_frame(const std::function<nlohmann::json()>& run) {
   try {
-    return run().dump();
+    return frame(run());
   } catch (const std::exception& ex) {
-    return nlohmann::json{{"status", "error"}, {"error", ex.what()}}.dump();
+    return frame({{"status", "error"}, {"error", ex.what()}});
   }
 }
 
 // In the child: run, write the output to fd, exit without running the parent's atexit handlers
 // or flushing its buffers twice.
 [[noreturn]] void child_main(const Job& job, int fd) {
-  const std::string out = job.work(); // a report or the error (report_text)
+  const std::string out = job.work(); // a report or the error (report_frame)
   std::size_t off = 0;
   while (off < out.size()) {
     const ssize_t n = write(fd, out.data() + off, out.size() - off);
@@ -61,15 +73,24 @@ std::string report_text(const std::function<nlohmann::json()>& run) {
   _exit(0);
 }
 
-// The child's report (the text up to `end`), or why it gave none.
-nlohmann::json finish(Child& c, std::size_t end = std::string::npos) {
+// Where the child's report frame ends in its output (what follows is a trace), or npos when the
+// output holds no whole frame.
+std::size_t frame_end(const std::string& out) {
+  std::uint64_t n = 0;
+  if (out.size() < sizeof n) return std::string::npos;
+  std::memcpy(&n, out.data(), sizeof n);
+  return n <= out.size() - sizeof n ? sizeof n + std::size_t(n) : std::string::npos;
+}
+
+// The child's report, or why it gave none.
+nlohmann::json finish(Child& c) {
   close(c.fd);
   int status = 0;
   while (waitpid(c.pid, &status, 0) < 0 && errno == EINTR) {
   }
-  if (!c.out.empty()) {
+  if (const std::size_t end = frame_end(c.out); end != std::string::npos) {
     try {
-      return nlohmann::json::parse(c.out.substr(0, end));
+      return nlohmann::json::from_cbor(c.out.begin() + 8, c.out.begin() + std::ptrdiff_t(end));
     } catch (const std::exception&) {
     }
   }
@@ -220,7 +241,7 @@ std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int 
   const NextJob next_job = [&]() -> std::optional<Job> {
     if (next == points.size()) return std::nullopt;
     const SimConfig& cfg = points[next];
-    return Job{next++, [&run_point, &cfg] { return report_text([&] { return run_point(cfg); }); }};
+    return Job{next++, [&run_point, &cfg] { return report_frame([&] { return run_point(cfg); }); }};
   };
   run_jobs(jobs, next_job, [&](Child& c) {
     nlohmann::json rep = finish(c);
@@ -278,10 +299,10 @@ public:
     const std::string& k = keys_[c.job.index];
     if (c.job.mode == kRecord) {
       recording_.erase(k);
-      const std::size_t end = c.out.find('\0');
-      report = finish(c, end);
-      if (end != std::string::npos)
-        traces_[k].assign(c.out.begin() + std::ptrdiff_t(end) + 1, c.out.end());
+      report = finish(c);
+      const std::size_t end = frame_end(c.out);
+      if (end != std::string::npos && end < c.out.size())
+        traces_[k].assign(c.out.begin() + std::ptrdiff_t(end), c.out.end());
       else if (report.value("status", "") == "ok")
         unreplayable_.insert(k); // it ran well and left no trace: it read the clock
       ++counts.recorded;
@@ -307,21 +328,20 @@ private:
       return {i,
               [&r, &cfg] {
                 std::vector<std::uint8_t> trace;
-                std::string out = report_text([&] { return r.record(cfg, &trace); });
-                if (!trace.empty()) out.append(1, '\0').append(trace.begin(), trace.end());
-                return out;
+                std::string out = report_frame([&] { return r.record(cfg, &trace); });
+                return out.append(trace.begin(), trace.end()); // (none: unreplayable)
               },
               m};
     if (m == kReplay)
       return {i,
               [&r, &cfg, &trace = traces_.at(keys_[i])] {
-                return report_text([&] {
+                return report_frame([&] {
                   std::optional<nlohmann::json> rep = r.replay(cfg, trace);
                   return rep ? std::move(*rep) : nlohmann::json{{kDiverged, true}};
                 });
               },
               m};
-    return {i, [&r, &cfg] { return report_text([&] { return r.record(cfg, nullptr); }); }, m};
+    return {i, [&r, &cfg] { return report_frame([&] { return r.record(cfg, nullptr); }); }, m};
   }
 
   const std::vector<SimConfig>& points_;
