@@ -1,4 +1,5 @@
 #include "raster/active_pixels.hpp"
+#include "raster/recent_records.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -114,6 +115,8 @@ ActivePixels zbuffer_spans(const SpanLists& L, const TriangleBatch& batch, const
   A.pixels.reserve(L.covered);
   // MSA[x] = 1 + index in the WPA of the pixel at column x; valid only if >= range (§2).
   std::vector<std::uint32_t> msa(width, 0);
+  RecentRecords records; // the set-up records read last (a fetch from memory on a host)
+  records.reset(batch.tris.size());
   for (int y = 0; y < L.height; ++y) {
     const std::uint32_t range = std::uint32_t(A.pixels.size()) + 1;
     int maxx = -1; // rightmost column produced so far on this scanline
@@ -121,6 +124,7 @@ ActivePixels zbuffer_spans(const SpanLists& L, const TriangleBatch& batch, const
       const SpanRecord& sp = L.spans[s];
       const ScreenTriangle& t = batch.tris[sp.tri];
       const RowShader rs(t, batch, ctx, y);
+      c.records_fetched += records.read(sp.tri);
       ++c.span_starts;
       c.pixels_generated += std::uint64_t(sp.x1 - sp.x0 + 1);
       // First segment: columns already produced on this scanline (contiguous, since spans come

@@ -47,6 +47,7 @@ struct Counters {
   // triangles"; "A triangle record is not a pixel record"):
   std::uint64_t far_lines = 0;        // depth-buffer lines entered from outside RecentLines' window
   std::uint64_t triangles_packed = 0; // triangle records gathered into / read out of messages
+  std::uint64_t records_fetched = 0;  // set-up records a span loop read from outside RecentRecords
 
   Counters& operator+=(const Counters& o);
   friend Counters operator+(Counters a, const Counters& b) { return a += b; }
@@ -97,6 +98,7 @@ void from_json(const nlohmann::json& j, Counters& c); // absent fields are 0
   X(wire_records)                                                                                  \
   X(wire_bytes)                                                                                    \
   X(far_lines)                                                                                     \
-  X(triangles_packed)
+  X(triangles_packed)                                                                              \
+  X(records_fetched)
 
 } // namespace zc
