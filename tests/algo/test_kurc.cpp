@@ -166,3 +166,16 @@ TEST(Kurc, EachSchemeCountsTheLoopsItRuns) {
   EXPECT_EQ(am.wire_records, 2 * am.merge_ops);
   EXPECT_EQ(pm.wire_bytes + am.wire_bytes, 0u);
 }
+
+TEST(Kurc, BothSpanLoopsCountTheSameRecordFetches) {
+  // 8pot_1's 15,289 triangles are more than RecentRecords' 8,192: ZBUF-EXC's local z-buffer and
+  // the active z-buffer read the same records in the same span order, so they fetch the same ones.
+  const auto zbuf = kurc("zbuf-exc", kurc_scene("8pot_1"), 1, 256, false);
+  const auto pair = kurc("pair-rs", kurc_scene("8pot_1"), 1, 256, false);
+  ASSERT_EQ(zbuf["status"], "ok") << zbuf.dump();
+  ASSERT_EQ(pair["status"], "ok") << pair.dump();
+  const auto fetched = zbuf["counters"]["records_fetched"].get<std::uint64_t>();
+  EXPECT_GT(fetched, 0u);
+  EXPECT_LT(fetched, zbuf["counters"]["span_starts"].get<std::uint64_t>());
+  EXPECT_EQ(pair["counters"]["records_fetched"].get<std::uint64_t>(), fetched);
+}
