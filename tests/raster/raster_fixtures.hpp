@@ -1,5 +1,6 @@
 #pragma once
 // Helpers for renderer tests: scenes and screen-space triangles built in code.
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -23,6 +24,28 @@ inline ProjectedVertex screen_vertex(double sx, double sy, double z, int w, int 
   p.light[1] = light.y;
   p.light[2] = light.z;
   return p;
+}
+
+// Every triangle of `tris` set up on a w x h screen (ids 0, 1, ...); its counters in `out`.
+inline TriangleBatch setup_all(const std::vector<std::array<ProjectedVertex, 3>>& tris, int w,
+                               int h, bool cull = false, Counters* out = nullptr) {
+  TriangleBatch b;
+  Counters c;
+  for (std::size_t i = 0; i < tris.size(); ++i) {
+    SetupInput in{
+        {&tris[i][0], &tris[i][1], &tris[i][2]}, {nullptr, nullptr, nullptr}, std::uint32_t(i), 0};
+    setup_triangle(in, w, h, cull, b, c);
+  }
+  if (out) *out = c;
+  return b;
+}
+
+// The triangle of test_renderer's HandCountedRightTriangle (pixel corners (0,0), (8,0), (0,8):
+// rows 0-6, columns 0 to 6 - y) set up on a w x h screen.
+inline TriangleBatch right_triangle(int w, int h, Counters* out = nullptr) {
+  return setup_all({{screen_vertex(0, 0, .5, w, h), screen_vertex(8, 0, .5, w, h),
+                     screen_vertex(0, 8, .5, w, h)}},
+                   w, h, false, out);
 }
 
 // Per-pixel hit counts of a batch over the whole screen (coverage only, no depth test).

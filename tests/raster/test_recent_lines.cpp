@@ -34,12 +34,7 @@ TEST(RecentLines, DrawBatchCountsTheSpansLinesOutsideTheWindow) {
   // window holds lines 8,192-16,383, so each span enters one far line (row y's first, 64 y); the
   // same triangle drawn again enters none.
   const int w = 1024, h = 256;
-  TriangleBatch b;
-  Counters ignored;
-  const ProjectedVertex v[3] = {screen_vertex(0, 0, .5, w, h), screen_vertex(8, 0, .5, w, h),
-                                screen_vertex(0, 8, .5, w, h)};
-  SetupInput in{{&v[0], &v[1], &v[2]}, {nullptr, nullptr, nullptr}, 0, 0};
-  setup_triangle(in, w, h, false, b, ignored);
+  TriangleBatch b = right_triangle(w, h);
   ASSERT_EQ(b.tris.size(), 1u);
   Framebuffer fb(w, RowSet::all(h), glm::vec3(0));
   ShadeContext ctx;

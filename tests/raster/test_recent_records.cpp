@@ -40,13 +40,9 @@ TEST(RecentRecords, ActiveZBufferCountsItsSpansRecords) {
   // HandCountedRightTriangle's triangle (rows 0-6) set up once, its record copied to make a batch
   // of N + 1: record N shares record 0's slot and the set-up wrote it last.
   const int w = 64, h = 8;
-  TriangleBatch b;
-  Counters ignored;
-  const ProjectedVertex v[3] = {screen_vertex(0, 0, .5, w, h), screen_vertex(8, 0, .5, w, h),
-                                screen_vertex(0, 8, .5, w, h)};
-  SetupInput in{{&v[0], &v[1], &v[2]}, {nullptr, nullptr, nullptr}, 0, 0};
-  setup_triangle(in, w, h, false, b, ignored);
+  TriangleBatch b = right_triangle(w, h);
   ASSERT_EQ(b.tris.size(), 1u);
+  Counters ignored;
   const SpanLists one = build_span_lists(b, w, h, ignored);
   ASSERT_EQ(one.spans.size(), 7u);
   ShadeContext ctx;

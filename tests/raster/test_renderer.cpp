@@ -16,32 +16,13 @@
 using namespace zc;
 using namespace zc::test;
 
-namespace {
-
-TriangleBatch setup_all(const std::vector<std::array<ProjectedVertex, 3>>& tris, int w, int h,
-                        bool cull = false, Counters* out = nullptr) {
-  TriangleBatch b;
-  Counters c;
-  for (std::size_t i = 0; i < tris.size(); ++i) {
-    SetupInput in{
-        {&tris[i][0], &tris[i][1], &tris[i][2]}, {nullptr, nullptr, nullptr}, std::uint32_t(i), 0};
-    setup_triangle(in, w, h, cull, b, c);
-  }
-  if (out) *out = c;
-  return b;
-}
-
-} // namespace
-
 TEST(Raster, HandCountedRightTriangle) {
   // Vertices on pixel corners (0,0), (8,0), (0,8) of an 8x8 screen: the centres (x+.5, y+.5)
   // strictly inside satisfy x + y <= 6 (28 pixels); the 8 centres exactly on the hypotenuse
   // (x + y = 7) lie on a right edge and are excluded by the top-left rule.
   const int w = 8, h = 8;
   Counters c;
-  auto b = setup_all({{screen_vertex(0, 0, .5, w, h), screen_vertex(8, 0, .5, w, h),
-                       screen_vertex(0, 8, .5, w, h)}},
-                     w, h, false, &c);
+  auto b = right_triangle(w, h, &c);
   ASSERT_EQ(b.tris.size(), 1u);
   EXPECT_EQ(c.triangles_in, 1u);
   EXPECT_EQ(c.triangles_setup, 1u);
