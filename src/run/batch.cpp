@@ -42,9 +42,11 @@ struct Child {
 // What a child writes to its pipe: the size of its report (8 bytes, the host's order), the report
 // as CBOR (binary: no number is printed by the child nor read back by the parent, and every value
 // comes back exactly), then, from a recording run, its trace.
+using FrameSize = std::uint64_t; // the frame's header
+
 std::string frame(const nlohmann::json& report) {
   const std::vector<std::uint8_t> cbor = nlohmann::json::to_cbor(report);
-  const std::uint64_t n = cbor.size();
+  const FrameSize n = cbor.size();
   std::string out(sizeof n, '\0');
   std::memcpy(out.data(), &n, sizeof n);
   return out.append(cbor.begin(), cbor.end());
@@ -76,7 +78,7 @@ std::string report_frame(const std::function<nlohmann::json()>& run) {
 // Where the child's report frame ends in its output (what follows is a trace), or npos when the
 // output holds no whole frame.
 std::size_t frame_end(const std::string& out) {
-  std::uint64_t n = 0;
+  FrameSize n = 0;
   if (out.size() < sizeof n) return std::string::npos;
   std::memcpy(&n, out.data(), sizeof n);
   return n <= out.size() - sizeof n ? sizeof n + std::size_t(n) : std::string::npos;
@@ -90,7 +92,8 @@ nlohmann::json finish(Child& c) {
   }
   if (const std::size_t end = frame_end(c.out); end != std::string::npos) {
     try {
-      return nlohmann::json::from_cbor(c.out.begin() + 8, c.out.begin() + std::ptrdiff_t(end));
+      return nlohmann::json::from_cbor(c.out.begin() + sizeof(FrameSize),
+                                       c.out.begin() + std::ptrdiff_t(end));
     } catch (const std::exception&) {
     }
   }
