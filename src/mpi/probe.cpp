@@ -65,21 +65,25 @@ nlohmann::json probe_cluster(const ProbeOptions& o) {
   for (int p : o.nodes)
     if (p < 1) throw UsageError("probe --nodes: node counts must be positive");
   const NetFit net = measure_network(rank, size);
-  // The CPU twice: rank 0 alone while the others sleep (what a one-node run has: the other cores
-  // idle), then every rank at once (a run on several nodes: every core busy, sharing the memory
-  // system and the last-level cache).
-  // At once, a block of several groups keeps the split rank 0 found alone (measure_cpu): every rank
-  // gets the alone multipliers.
-  nlohmann::json solo_log = nlohmann::json::object();
-  CpuCosts solo;
-  if (rank == 0) solo = measure_cpu(o.root, o.seconds, solo_log);
-  sleeping_barrier();
-  std::uint64_t groups = solo.multipliers.size();
-  MPI_Bcast(&groups, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
-  solo.multipliers.resize(std::size_t(groups));
-  MPI_Bcast(solo.multipliers.data(), int(groups), MPI_DOUBLE, 0, MPI_COMM_WORLD);
-  nlohmann::json cpu_log = nlohmann::json::array();
-  const CostTable mine_cost = measure_cpu(o.root, o.seconds, cpu_log, solo.multipliers).cost;
+  // The CPU twice, round by round in turn (measure_cpu): rank 0 alone while the others sleep (what
+  // a one-node run has: the other cores idle), then every rank at once (a run on several nodes:
+  // every core busy, sharing the memory system and the last-level cache).
+  ProbeRanks ranks;
+  ranks.times_alone = rank == 0;
+  ranks.wait = sleeping_barrier;
+  ranks.share = [](const std::vector<double>& mine) {
+    std::vector<double> k = mine;
+    std::uint64_t groups = k.size();
+    MPI_Bcast(&groups, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+    k.resize(std::size_t(groups));
+    MPI_Bcast(k.data(), int(groups), MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    return k;
+  };
+  const CpuProbe cpu = measure_cpu(o.root, o.seconds, ranks);
+  const CpuCosts& solo = cpu.alone;
+  const nlohmann::json& solo_log = cpu.alone_log;
+  const nlohmann::json& cpu_log = cpu.at_once_log;
+  const CostTable& mine_cost = cpu.at_once.cost;
   const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGE_SIZE);
   const nlohmann::json mine = {{"host", processor_name()},
                                {"cost", cost_json(mine_cost)},

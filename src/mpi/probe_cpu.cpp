@@ -177,7 +177,9 @@ struct Loop {
 
 struct Probe {
   double min_s;
-  std::vector<Loop> loops;
+  const ProbeRanks& ranks;
+  std::vector<Loop> loops;       // every rank at once
+  std::vector<Loop> loops_alone; // rank 0 alone (times_alone), the other ranks waiting
 
   struct Job {
     std::size_t block;
@@ -185,7 +187,7 @@ struct Probe {
     std::function<void()> prep;
     std::function<void(Counters&)> fn;
     Counters c;
-    std::vector<double> t;
+    std::vector<double> t, t_alone;
   };
   std::vector<Job> jobs;
 
@@ -198,6 +200,7 @@ struct Probe {
                     std::move(prep),
                     std::move(fn),
                     {},
+                    {},
                     {}});
   }
   void time(std::size_t block, const std::string& what, std::function<void(Counters&)> fn) {
@@ -205,38 +208,55 @@ struct Probe {
         block, what, [] {}, std::move(fn));
   }
 
-  // The registered loops in turn, three rounds, each loop called in a round until it has run a
-  // third of min_s: a change of the machine's load meanwhile falls on all of them, not on the
-  // loops timed last (the blocks subtract one loop's costs from another's). A loop's time is the
-  // median of its calls. Under callgrind every call's instructions are dumped apart, named after
-  // the loop (scripts/probe_instructions.py).
-  void run() {
-    constexpr int kRounds = 3;
-    for (int r = 0; r < kRounds; ++r)
-      for (Job& j : jobs) {
-#ifdef ZC_CALLGRIND
-        const std::string dump_name = "probe loop: " + j.name;
-#endif
-        double spent = 0;
-        do {
-          j.prep();
-          j.c = Counters{};
-#ifdef ZC_CALLGRIND
-          CALLGRIND_ZERO_STATS;
-#endif
-          const double t0 = cpu_now();
-          j.fn(j.c);
-          const double s = cpu_now() - t0;
-#ifdef ZC_CALLGRIND
-          CALLGRIND_DUMP_STATS_AT(dump_name.c_str());
-#endif
-          j.t.push_back(s);
-          spent += s;
-        } while (spent < min_s / kRounds);
-      }
+  // Every registered loop in turn, each called until it has run a third of min_s; its times go
+  // to `alone` or to the at-once series. Under callgrind every call's instructions are dumped
+  // apart, named after the loop (scripts/probe_instructions.py).
+  void round(bool alone) {
     for (Job& j : jobs) {
-      std::sort(j.t.begin(), j.t.end());
-      loops.push_back({j.block, j.name, j.c, j.t[j.t.size() / 2], j.t.size()});
+#ifdef ZC_CALLGRIND
+      const std::string dump_name = "probe loop: " + j.name;
+#endif
+      double spent = 0;
+      do {
+        j.prep();
+        j.c = Counters{};
+#ifdef ZC_CALLGRIND
+        CALLGRIND_ZERO_STATS;
+#endif
+        const double t0 = cpu_now();
+        j.fn(j.c);
+        const double s = cpu_now() - t0;
+#ifdef ZC_CALLGRIND
+        CALLGRIND_DUMP_STATS_AT(dump_name.c_str());
+#endif
+        (alone ? j.t_alone : j.t).push_back(s);
+        spent += s;
+      } while (spent < min_s / kRounds);
+    }
+  }
+
+  // The registered loops, three rounds; each round times them first on rank 0 alone, then on
+  // every rank at once. A change of the machine's load meanwhile falls on all the loops, not on
+  // those timed last (the blocks subtract one loop's costs from another's), and on the alone and
+  // at-once times alike: their ratio, what a node loses to the others sharing the memory system,
+  // is taken in the same minutes (timed one after the other, two probes found a rank 17 % faster
+  // with the other cores busy than alone). A loop's time is the median of its calls.
+  static constexpr int kRounds = 3;
+  void run() {
+    for (int r = 0; r < kRounds; ++r) {
+      if (ranks.times_alone) round(true);
+      ranks.wait();
+      round(false);
+      ranks.wait();
+    }
+    const auto median = [](std::vector<double>& t) {
+      std::sort(t.begin(), t.end());
+      return t[t.size() / 2];
+    };
+    for (Job& j : jobs) {
+      loops.push_back({j.block, j.name, j.c, median(j.t), j.t.size()});
+      if (!j.t_alone.empty())
+        loops_alone.push_back({j.block, j.name, j.c, median(j.t_alone), j.t_alone.size()});
     }
     jobs.clear();
   }
@@ -677,10 +697,9 @@ std::vector<double> solve(const std::vector<Loop>& loops, const std::vector<doub
 
 } // namespace
 
-CpuCosts measure_cpu(const std::string& root, double min_seconds, nlohmann::json& log,
-                     const std::vector<double>& alone) {
+CpuProbe measure_cpu(const std::string& root, double min_seconds, const ProbeRanks& ranks) {
   premap_heap(std::size_t(1) << 30);
-  Probe p{min_seconds, {}, {}};
+  Probe p{min_seconds, ranks, {}, {}, {}};
   // The bone's 78,738 triangles (a dense mesh as the bunny's, on no workload) at the workloads'
   // sizes and triangle sizes: 512 and 1024 (elastic's bunny at 1024x1024: 2-4 rows and 2 pixels a
   // span), 2048 and 4096 (Kurc's bunny at 5120x5120: 20 rows, 8 pixels a span; a frame buffer of
@@ -710,10 +729,19 @@ CpuCosts measure_cpu(const std::string& root, double min_seconds, nlohmann::json
   buffer_loops(p, 4096, true);
   buffer_loops(p, 5120, false);
   // Every loop recorded in block order, so a block's loops come after those it subtracts.
-  std::stable_sort(p.loops.begin(), p.loops.end(),
-                   [](const Loop& a, const Loop& b) { return a.block < b.block; });
-  const std::vector<double> k = solve(p.loops, alone, log);
-  return {scale_groups(probe_prior(), probe_groups(), k), k};
+  const auto by_block = [](const Loop& a, const Loop& b) { return a.block < b.block; };
+  std::stable_sort(p.loops.begin(), p.loops.end(), by_block);
+  std::stable_sort(p.loops_alone.begin(), p.loops_alone.end(), by_block);
+  CpuProbe out;
+  if (!p.loops_alone.empty()) {
+    const std::vector<double> k = solve(p.loops_alone, {}, out.alone_log);
+    out.alone = {scale_groups(probe_prior(), probe_groups(), k), k};
+  }
+  // At once, a block of several groups keeps the split rank 0 found alone (solve_block).
+  const std::vector<double> alone = ranks.share(out.alone.multipliers);
+  const std::vector<double> k = solve(p.loops, alone, out.at_once_log);
+  out.at_once = {scale_groups(probe_prior(), probe_groups(), k), k};
+  return out;
 }
 
 } // namespace zc
