@@ -137,6 +137,10 @@ for xml, key in (("c-1.xml", "cost_alone"), ("c-2.xml", "cost")):
         want = j[key]["cost_" + f] * speed
         assert abs(float(v) - want) <= 1e-9 * max(1.0, abs(want)), (xml, f, v, want)
 assert j["cost_alone"] != j["cost"], "the two tables are the same measurement"
+# At once, no cost is below the alone one (a core sharing the memory system is not faster).
+low = {f: (v, j["cost_alone"][f]) for f, v in j["cost"].items()
+       if f.startswith("cost_") and v < j["cost_alone"][f] * (1 - 1e-9)}
+assert not low, f"at-once costs below the alone ones: {low}"
 PY
   # The probed cluster's messages are charged the payloads its MPI backend moves (13-byte pixels),
   # the iPSC's the paper's records (9 bytes): the same file without zcube.messages charges those.
