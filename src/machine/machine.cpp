@@ -47,7 +47,7 @@ const std::vector<CostGroup>& cost_groups() {
        {"spans", "rows_scanned", "edge_walks", "span_starts", "sort_steps", "records_fetched"}},
       {"pixels",
        {"pixels_generated", "pixels_tested", "pixels_written", "pixels_final", "texels_fetched",
-        "far_lines"}},
+        "far_lines", "distant_lines"}},
       {"clear", {"pixels_cleared"}},
       {"merge", {"merge_ops"}},
       {"packing",

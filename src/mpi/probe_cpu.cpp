@@ -73,6 +73,7 @@ enum Group : std::size_t {
   kSpans,
   kPixels,
   kFarLines,
+  kDistantLines,
   kSort,
   kWpaTested,
   kWpaAppended,
@@ -99,6 +100,7 @@ const std::vector<CostGroup>& probe_groups() {
       {"pixels",
        {"pixels_generated", "pixels_tested", "pixels_written", "pixels_final", "texels_fetched"}},
       {"far lines", {"far_lines"}},
+      {"distant lines", {"distant_lines"}},
       {"sort", {"sort_steps"}},
       {"wpa tested", {"wpa_tested"}},
       {"wpa appended", {"wpa_appended"}},
@@ -152,8 +154,10 @@ const std::vector<Block>& blocks() {
       // and sizes' different mixes separate them.
       {"near z-buffer", {kEdges, kSpans, kPixels}},
       // The frame-buffer z-buffer on whole pictures, less the above: its far lines (the scattered
-      // orders: the same triangles, other far lines).
-      {"z-buffer", {kFarLines}},
+      // orders: the same triangles, other far lines), and of them the distant ones, from main
+      // memory rather than the last-level cache (the bone at 2048 and 4096: frame buffers of 50
+      // and 200 MB; at 512 and 1024, 3 and 12 MB, it has none).
+      {"z-buffer", {kFarLines, kDistantLines}},
       {"span lists", {kSort}},
       // Kurc et al.'s active z-buffer, less its span starts and fragments: a pixel tested through
       // the MSA and one appended to the WPA, apart (zcube's loop: about 5 and 41 instructions;
@@ -587,13 +591,15 @@ void buffer_loops(Probe& p, int size, bool merges) {
   p.run();
 }
 
-// The table the probe's multipliers scale: the 80386's physical estimates, and for a far line and a
-// set-up record fetched (nothing on the 80386, whose memory has one level: operations.json) a
-// nominal 100 ns, a DRAM access of this era, their multipliers a fraction of it.
+// The table the probe's multipliers scale: the 80386's physical estimates, and for a far line, a
+// distant line (what it costs beyond a far line) and a set-up record fetched (nothing on the
+// 80386, whose memory has one level: operations.json) a nominal 100 ns, a DRAM access of this
+// era, their multipliers a fraction of it.
 CostTable probe_prior() {
   CostTable t = zcube_loop_seconds(cpu_model("i80386"));
   t.far_lines = 100e-9;
   t.records_fetched = 100e-9;
+  t.distant_lines = 100e-9;
   return t;
 }
 
@@ -725,6 +731,7 @@ CpuProbe measure_cpu(const std::string& root, double min_seconds, const ProbeRan
   scattered_loops(p, load(root + "/scenes/bone.json", 512));
   scattered_loops(p, load(root + "/scenes/bone.json", 1024));
   scattered_loops(p, load(root + "/scenes/bone.json", 2048));
+  scattered_loops(p, load(root + "/scenes/bone.json", 4096));
   for (int size : {512, 1024, 2048, 4096})
     near_loops(p, load(root + "/scenes/bone.json", size));
   near_loops(p, load(root + "/scenes/blazek/thesis_spheres_16.json", 512));

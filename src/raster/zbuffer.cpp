@@ -264,21 +264,23 @@ void shaded_row(const ScreenTriangle& t, const TriangleBatch& batch, const Shade
   }
 }
 
-// The depth lines span [x0, x1] of row y enters in `recent`: those it did not hold (far_lines).
-std::uint64_t enter_lines(RecentLines* recent, const Framebuffer& fb, int y, int x0, int x1) {
+// The depth lines span [x0, x1] of row y enters in `recent`: those it did not hold (far_lines),
+// and of them those outside the last-level-cache window too, added to `distant`.
+std::uint64_t enter_lines(RecentLines* recent, const Framebuffer& fb, int y, int x0, int x1,
+                          std::uint64_t& distant) {
   if (!recent) return 0;
   const std::size_t i = fb.index(x0, y);
-  return recent->enter(i, i + std::size_t(x1 - x0));
+  return recent->enter(i, i + std::size_t(x1 - x0), &distant);
 }
 
 void draw_untextured(const ScreenTriangle& t, const ShadeContext& ctx, const RowSet& rows,
                      Framebuffer& fb, Counters& c, std::uint64_t* newly_covered,
                      RecentLines* recent) {
   const FlatSpan s = flat(t, ctx, fb);
-  std::uint64_t spans = 0, generated = 0, written = 0, first = 0, far = 0;
+  std::uint64_t spans = 0, generated = 0, written = 0, first = 0, far = 0, distant = 0;
   for_each_span(t, rows, fb.width(), [&](int y, int x0, int x1) {
     ++spans;
-    far += enter_lines(recent, fb, y, x0, x1);
+    far += enter_lines(recent, fb, y, x0, x1, distant);
     flat_row(t, s, y, x0, x1, fb, written, first);
     generated += std::uint64_t(x1 - x0 + 1);
   });
@@ -289,6 +291,7 @@ void draw_untextured(const ScreenTriangle& t, const ShadeContext& ctx, const Row
   c.pixels_tested += generated;
   c.pixels_written += written;
   c.far_lines += far;
+  c.distant_lines += distant;
   if (newly_covered) *newly_covered += first;
 }
 
@@ -305,7 +308,7 @@ void draw_triangle(const ScreenTriangle& t, const TriangleBatch& batch, const Sh
   for_each_span(t, rows, fb.width(), [&](int y, int x0, int x1) {
     ++c.spans;
     ++c.span_starts;
-    c.far_lines += enter_lines(recent, fb, y, x0, x1);
+    c.far_lines += enter_lines(recent, fb, y, x0, x1, c.distant_lines);
     shaded_row(t, batch, ctx, y, x0, x1, fb, c, newly_covered);
     const std::uint64_t n = std::uint64_t(x1 - x0 + 1);
     c.pixels_generated += n;
@@ -316,7 +319,7 @@ void draw_triangle(const ScreenTriangle& t, const TriangleBatch& batch, const Sh
 void draw_span(const ScreenTriangle& t, const TriangleBatch& batch, const ShadeContext& ctx, int y,
                int x0, int x1, Framebuffer& fb, Counters& c) {
   ++c.span_starts;
-  c.far_lines += enter_lines(&fb.recent_lines(), fb, y, x0, x1);
+  c.far_lines += enter_lines(&fb.recent_lines(), fb, y, x0, x1, c.distant_lines);
   const std::uint64_t n = std::uint64_t(x1 - x0 + 1);
   c.pixels_generated += n;
   c.pixels_tested += n;

@@ -48,6 +48,7 @@ struct Counters {
   std::uint64_t far_lines = 0;        // depth-buffer lines entered from outside RecentLines' window
   std::uint64_t triangles_packed = 0; // triangle records gathered into / read out of messages
   std::uint64_t records_fetched = 0;  // set-up records a span loop read from outside RecentRecords
+  std::uint64_t distant_lines = 0;    // far lines outside RecentLines' last-level-cache window too
 
   Counters& operator+=(const Counters& o);
   friend Counters operator+(Counters a, const Counters& b) { return a += b; }
@@ -99,6 +100,7 @@ void from_json(const nlohmann::json& j, Counters& c); // absent fields are 0
   X(wire_bytes)                                                                                    \
   X(far_lines)                                                                                     \
   X(triangles_packed)                                                                              \
-  X(records_fetched)
+  X(records_fetched)                                                                               \
+  X(distant_lines)
 
 } // namespace zc

@@ -56,3 +56,57 @@ TEST(RecentLines, DrawBatchCountsTheSpansLinesOutsideTheWindow) {
   draw_batch(b, ctx, small, s);
   EXPECT_EQ(s.far_lines, 0u);
 }
+
+TEST(RecentLines, DistantLinesAreFarLinesOutsideTheLastLevelWindow) {
+  // 200,000 lines: after the clear, the window's slot j holds the last line j + 8,192 k below
+  // 200,000, the last-level window's slot j the last line j + 131,072 k.
+  RecentLines r;
+  r.reset(16 * 200000);
+  std::uint64_t distant = 0;
+  EXPECT_EQ(r.enter(0, 0, &distant), 1u); // line 0: its slots hold 196,608 and 131,072
+  EXPECT_EQ(distant, 1u);
+  EXPECT_EQ(r.enter(16 * 131077, 16 * 131077, &distant), 1u); // far (196,613 in its slot) ...
+  EXPECT_EQ(distant, 1u);                                     // ... but in the last-level one
+  EXPECT_EQ(r.enter(0, 15, &distant), 0u);                    // line 0 again: near
+  EXPECT_EQ(distant, 1u);
+  // Line 8,192 evicts line 0 from the window, not from the last-level window: 0 is far again,
+  // not distant.
+  EXPECT_EQ(r.enter(16 * 8192, 16 * 8192, &distant), 1u);
+  EXPECT_EQ(distant, 2u); // 8,192 itself: its last-level slot held 139,264
+  EXPECT_EQ(r.enter(0, 0, &distant), 1u);
+  EXPECT_EQ(distant, 2u);
+  // A buffer of at most 131,072 lines has far lines but no distant one (entered in order, each
+  // line evicts from the window the one its slot held before that one is entered: all far).
+  RecentLines llc;
+  llc.reset(16 * 131072);
+  std::uint64_t none = 0;
+  EXPECT_EQ(llc.enter(0, 16 * 131072 - 1, &none), 131072u);
+  EXPECT_EQ(none, 0u);
+}
+
+TEST(RecentLines, DrawBatchCountsDistantLinesInAFrameBufferBeyondTheLastLevelWindow) {
+  // The right triangle (rows 0-6) in 2,048 x 1,100: 140,800 lines, 128 a row. After the clear
+  // the last-level window holds lines 9,728 and above in the slots below 9,728: every span's
+  // first line (128 y) is far and distant; drawn again, neither.
+  const int w = 2048, h = 1100;
+  TriangleBatch b = right_triangle(w, h);
+  ASSERT_EQ(b.tris.size(), 1u);
+  Framebuffer fb(w, RowSet::all(h), glm::vec3(0));
+  ShadeContext ctx;
+  std::vector<Material> mats{Material{}};
+  ctx.materials = &mats;
+  Counters c;
+  draw_batch(b, ctx, fb, c);
+  ASSERT_EQ(c.spans, 7u);
+  EXPECT_EQ(c.far_lines, 7u);
+  EXPECT_EQ(c.distant_lines, 7u);
+  draw_batch(b, ctx, fb, c);
+  EXPECT_EQ(c.far_lines, 7u);
+  EXPECT_EQ(c.distant_lines, 7u);
+  // The 1,024 x 256 buffer of the test above fits the last-level window: far lines, none distant.
+  Framebuffer small(1024, RowSet::all(256), glm::vec3(0));
+  Counters s;
+  draw_batch(right_triangle(1024, 256), ctx, small, s);
+  EXPECT_EQ(s.far_lines, 7u);
+  EXPECT_EQ(s.distant_lines, 0u);
+}
