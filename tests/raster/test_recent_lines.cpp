@@ -9,6 +9,19 @@
 using namespace zc;
 using namespace zc::test;
 
+namespace {
+// Draws the right triangle of HandCountedRightTriangle (rows 0-6, columns 0 to 6 - y), set up for
+// fb's width and `h` rows, into fb, adding its counts to c.
+void draw_right_triangle(Framebuffer& fb, int h, Counters& c) {
+  const TriangleBatch b = right_triangle(fb.width(), h);
+  ASSERT_EQ(b.tris.size(), 1u);
+  ShadeContext ctx;
+  std::vector<Material> mats{Material{}};
+  ctx.materials = &mats;
+  draw_batch(b, ctx, fb, c);
+}
+} // namespace
+
 TEST(RecentLines, ClearEntersEveryLineInOrder) {
   // 20,000 lines: after the clear, slot j holds the last line j + 8,192 k below 20,000.
   RecentLines r;
@@ -34,26 +47,21 @@ TEST(RecentLines, DrawBatchCountsTheSpansLinesOutsideTheWindow) {
   // window holds lines 8,192-16,383, so each span enters one far line (row y's first, 64 y); the
   // same triangle drawn again enters none.
   const int w = 1024, h = 256;
-  TriangleBatch b = right_triangle(w, h);
-  ASSERT_EQ(b.tris.size(), 1u);
   Framebuffer fb(w, RowSet::all(h), glm::vec3(0));
-  ShadeContext ctx;
-  std::vector<Material> mats{Material{}};
-  ctx.materials = &mats;
   Counters c;
-  draw_batch(b, ctx, fb, c);
+  draw_right_triangle(fb, h, c);
   EXPECT_EQ(c.spans, 7u);
   EXPECT_EQ(c.far_lines, 7u);
-  draw_batch(b, ctx, fb, c);
+  draw_right_triangle(fb, h, c);
   EXPECT_EQ(c.far_lines, 7u);
   // After a clear the window is the clear's again.
   fb.clear(glm::vec3(0));
-  draw_batch(b, ctx, fb, c);
+  draw_right_triangle(fb, h, c);
   EXPECT_EQ(c.far_lines, 14u);
   // A buffer within the window (1,024 x 8: 512 lines) has no far line.
   Framebuffer small(w, RowSet::band(0, 8), glm::vec3(0));
   Counters s;
-  draw_batch(b, ctx, small, s);
+  draw_right_triangle(small, h, s);
   EXPECT_EQ(s.far_lines, 0u);
 }
 
@@ -89,24 +97,19 @@ TEST(RecentLines, DrawBatchCountsDistantLinesInAFrameBufferBeyondTheLastLevelWin
   // the last-level window holds lines 9,728 and above in the slots below 9,728: every span's
   // first line (128 y) is far and distant; drawn again, neither.
   const int w = 2048, h = 1100;
-  TriangleBatch b = right_triangle(w, h);
-  ASSERT_EQ(b.tris.size(), 1u);
   Framebuffer fb(w, RowSet::all(h), glm::vec3(0));
-  ShadeContext ctx;
-  std::vector<Material> mats{Material{}};
-  ctx.materials = &mats;
   Counters c;
-  draw_batch(b, ctx, fb, c);
+  draw_right_triangle(fb, h, c);
   ASSERT_EQ(c.spans, 7u);
   EXPECT_EQ(c.far_lines, 7u);
   EXPECT_EQ(c.distant_lines, 7u);
-  draw_batch(b, ctx, fb, c);
+  draw_right_triangle(fb, h, c);
   EXPECT_EQ(c.far_lines, 7u);
   EXPECT_EQ(c.distant_lines, 7u);
   // The 1,024 x 256 buffer of the test above fits the last-level window: far lines, none distant.
   Framebuffer small(1024, RowSet::all(256), glm::vec3(0));
   Counters s;
-  draw_batch(right_triangle(1024, 256), ctx, small, s);
+  draw_right_triangle(small, 256, s);
   EXPECT_EQ(s.far_lines, 7u);
   EXPECT_EQ(s.distant_lines, 0u);
 }
