@@ -1,7 +1,9 @@
 #include "sim/simulation.hpp"
 
+#include <malloc.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -11,6 +13,7 @@
 #include <memory>
 
 #include <simgrid/s4u.hpp>
+#include <xbt/config.hpp>
 
 #include "geometry/camera_path.hpp"
 #include "machine/platform_xml.hpp"
@@ -52,6 +55,19 @@ void add_cpu_and_what_ifs(nlohmann::json& j, const PlatformModel& pm, const Over
   if (o.memory_bytes) w["memory_bytes"] = *o.memory_bytes;
   if (o.cost_scale) w["cost_scale"] = *o.cost_scale;
   j["what_if"] = w;
+}
+
+// A rank's stack (contexts/stack-size, 8 MiB) holds the few pages a node program uses. Without
+// guard pages (the flow fidelity) SimGrid allocates it zeroed: on fresh pages (glibc's mmap) that
+// costs nothing, but once a larger buffer freed earlier has raised glibc's dynamic mmap threshold
+// above the stack's size, the stack comes from the heap and is cleared page by page (2,048 page
+// faults a rank). The threshold is fixed at the stack's size, so stacks stay on fresh pages; smaller
+// buffers stay on the heap, whose top is trimmed only past twice that, as the dynamic rule would.
+void keep_stacks_on_fresh_pages() {
+  const long stack = long(simgrid::config::get_value<int>("contexts/stack-size")) * 1024;
+  if (stack < (1L << 20)) return; // a small stack is cheap to clear; keep glibc's rule
+  mallopt(M_MMAP_THRESHOLD, int(std::min(stack, 32L << 20)));
+  mallopt(M_TRIM_THRESHOLD, int(std::min(2 * stack, 64L << 20)));
 }
 
 } // namespace
@@ -115,6 +131,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   int argc = int(argv.size());
   declare_platform_flags();
   sg::Engine e(&argc, argv.data());
+  keep_stacks_on_fresh_pages();
   if (is_file)
     load_platform_file(e, cfg.machine);
   else
