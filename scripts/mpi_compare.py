@@ -2,8 +2,8 @@
 """Measured (MPI backend) against predicted (simulator on the probed platform), phase by phase.
 
 usage: mpi_compare.py OUT CORES
-Reads OUT/measured.csv (every run's phase times), OUT/core_share.csv (each run's core share, if
-there), OUT/predicted/<workload>-<P>.json (reports made
+Reads OUT/measured.csv (every run's phase times), OUT/measured_ranks.csv (each rank's, if there),
+OUT/core_share.csv (each run's core share, if there), OUT/predicted/<workload>-<P>.json (reports made
 before the measured runs), OUT/probe.txt and OUT/conditions.txt; writes OUT/comparison.csv and
 OUT/README.md. A point is measured as the median of its runs; the spread is (max - min) / median.
 With OUT/after/predicted/ (the same predictions from a second probe, made after the measured runs),
@@ -62,6 +62,37 @@ def predicted_phases(path):
     return pp
 
 
+def load_rank_phases(path):
+    """(workload, P) -> {(rank, phase): [seconds per run]}, from measured_ranks.csv (if there)."""
+    out = {}
+    if os.path.exists(path):
+        for r in csv.DictReader(open(path)):
+            key = (r["workload"], int(r["nodes"]))
+            out.setdefault(key, {}).setdefault((r["rank"], r["phase"]), []).append(float(r["seconds"]))
+    return out
+
+
+def rank_table(measured, report_path, phases):
+    """Each rank's median time in the given phases against its prediction, as markdown: a phase's
+    figure is its slowest rank's, and a rank that waits for another shows the wait in its own."""
+    pred = json.load(open(report_path))
+    ranks = [str(n["rank"]) for n in pred["per_node"]]
+    predicted = {(str(n["rank"]), ph): t for n in pred["per_node"] for ph, t in n["phases"].items()}
+    head = "| phase | " + " | ".join(f"rank {r}: measured (s) | predicted (s) | error" for r in ranks)
+    lines = [head + " |", "|---|" + "---|---|---|" * len(ranks)]
+    for ph in phases:
+        cells = []
+        for r in ranks:
+            runs = measured.get((r, ph))
+            m = statistics.median(runs) if runs else None
+            pr = predicted.get((r, ph))
+            err = (pr - m) / m if m and pr is not None else None
+            cells += [fmt(m) if m is not None else "", fmt(pr) if pr is not None else "",
+                      pct(err) if err is not None else ""]
+        lines.append("| " + ph + " | " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
 def drift(before, after, judged):
     """The largest relative change between two probes' predictions over the judged figures, and
     whether any change passes its target (the total's or a phase's)."""
@@ -110,6 +141,7 @@ def main():
     if os.path.exists(share_csv):
         for r in csv.DictReader(open(share_csv)):
             shares.setdefault((r["workload"], int(r["nodes"])), []).append(float(r["core_share"]))
+    rank_runs = load_rank_phases(os.path.join(out, "measured_ranks.csv"))
     rows, totals, details = [], [], []
     passed = failed = unsteady = 0
     worst_drift = 0.0
@@ -186,6 +218,12 @@ def main():
             "| phase | measured median (s) | spread | predicted (s) | error | share of the run |\n"
             "|---|---|---|---|---|---|\n" + "\n".join(lines) + "\n"
         )
+        shown = [ph for ph in judged_figures if ph != "total"]
+        if p > 1 and key in rank_runs and shown:
+            details.append(
+                "Rank by rank (the judged phases; medians over the runs):\n\n"
+                + rank_table(rank_runs[key], os.path.join(out, "predicted", f"{name}-{p}.json"),
+                             shown))
     with open(os.path.join(out, "comparison.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["workload", "nodes", "processes", "phase", "measured_median_s", "spread",
@@ -231,7 +269,9 @@ shared-memory transport copied large messages by {single_copy_text(cond.get('sin
 2. Every workload was simulated on `cluster-P.xml` (`--fidelity analytic`) **before** any measured
    run (`predicted/`); nothing measured below enters a prediction.
 3. Every point was run {cond.get('runs')} times on the MPI backend (`measured.csv`); a figure is the
-   median of its runs, the spread (max - min) / median. Blazek's node-initiated method runs its host
+   median of its runs, the spread (max - min) / median. A phase's figure is its slowest rank's;
+   each rank's own (`measured_ranks.csv`) is shown under a point of two ranks or more, where a rank
+   that waited for another shows the wait in its own phase. Blazek's node-initiated method runs its host
    computer as one more process. **Points with more processes than cores are oversubscribed**:
    ranks share cores, so they are pessimistic and noisy; the prediction assumes a core each.
    The core share is the median over the runs of the lowest rank's CPU time over its wall-clock

@@ -114,6 +114,7 @@ predict "$out/cluster" "$out/predicted"
 export OMPI_MCA_mpi_yield_when_idle=1
 echo "workload,nodes,processes,run,phase,seconds" >"$out/measured.csv"
 echo "workload,nodes,processes,run,core_share" >"$out/core_share.csv"
+echo "workload,nodes,processes,run,rank,phase,seconds" >"$out/measured_ranks.csv"
 for w in "${workloads[@]}"; do
   IFS='|' read -r name host args <<<"$w"
   for p in "${nodes[@]}"; do
@@ -130,6 +131,12 @@ with open(out + "/measured.csv", "a") as f:
     for ph in j["phases"]:
         print(f"{name},{p},{np},{i},{ph['name']},{ph['max_s']!r}", file=f)
     print(f"{name},{p},{np},{i},total,{j['virtual_time_s']!r}", file=f)
+# Each rank's own phase times (a phase's figure above is the slowest rank's): where one rank waits
+# for another, the wait shows in the rank that waited.
+with open(out + "/measured_ranks.csv", "a") as f:
+    for node in j["per_node"]:
+        for ph, s in node["phases"].items():
+            print(f"{name},{p},{np},{i},{node['rank']},{ph},{s!r}", file=f)
 with open(out + "/core_share.csv", "a") as f:
     print(f"{name},{p},{np},{i},{j['host']['core_share']!r}", file=f)
 PY

@@ -170,7 +170,8 @@ validate)
   QUICK=1 ZCUBE_MPI_CLOCK=cpu "$src/scripts/mpi_vs_model.sh" "$zcube" "$tmp/v" >"$tmp/out" 2>&1
   rc=$?
   [ $rc = 0 ] || [ $rc = 3 ] || bad "mpi_vs_model.sh: exit $rc: $(tail -3 "$tmp/out")"
-  for f in probe.json cluster-1.xml cluster-2.xml cluster-4.xml measured.csv core_share.csv \
+  for f in probe.json cluster-1.xml cluster-2.xml cluster-4.xml measured.csv measured_ranks.csv \
+    core_share.csv \
     comparison.csv README.md reference.csv predicted/pair-rs-1.json predicted/node-initiated-2.json \
     after/probe.json after/predicted/zbuf-exc-2.json; do
     [ -s "$tmp/v/$f" ] || bad "mpi_vs_model.sh wrote no $f"
@@ -203,6 +204,11 @@ assert verdict, "no steadiness verdict"
 assert (verdict.group(1) == "steady host") == all(v != "unsteady" for v, _, _ in rows), rows
 assert all((v == "-") == (d == "-") == (r == "-") for v, d, r in rows), "drifts: " + str(rows)
 # The reference loop: around the probe and around every point (before and after).
+# Each rank's phases of a two-rank point, measured and predicted, under the point's phases.
+ranks = list(csv.DictReader(open(sys.argv[1].replace("comparison.csv", "measured_ranks.csv"))))
+assert {r["rank"] for r in ranks if r["nodes"] == "2" and r["workload"] == "pair-rs"} == {"0", "1"}
+assert readme.count("| phase | rank 0: measured (s) | predicted (s) | error | rank 1: measured") == 3, \
+    "rank-by-rank tables of the three two-rank points without a host computer"
 refs = list(csv.DictReader(open(sys.argv[1].replace("comparison.csv", "reference.csv"))))
 assert len(refs) == 2 + 2 * 12 and all(float(r["seconds"]) > 0 for r in refs), refs
 PY
