@@ -61,8 +61,9 @@ void add_cpu_and_what_ifs(nlohmann::json& j, const PlatformModel& pm, const Over
 // guard pages (the flow fidelity) SimGrid allocates it zeroed: on fresh pages (glibc's mmap) that
 // costs nothing, but once a larger buffer freed earlier has raised glibc's dynamic mmap threshold
 // above the stack's size, the stack comes from the heap and is cleared page by page (2,048 page
-// faults a rank). The threshold is fixed at the stack's size, so stacks stay on fresh pages; smaller
-// buffers stay on the heap, whose top is trimmed only past twice that, as the dynamic rule would.
+// faults a rank). The threshold is fixed at the stack's size, so stacks stay on fresh pages;
+// smaller buffers stay on the heap, whose top is trimmed only past twice that, as the dynamic rule
+// would.
 void keep_stacks_on_fresh_pages() {
   const long stack = long(simgrid::config::get_value<int>("contexts/stack-size")) * 1024;
   if (stack < (1L << 20)) return; // a small stack is cheap to clear; keep glibc's rule
