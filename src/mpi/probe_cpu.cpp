@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <memory>
 
 #include "algo/composite.hpp"
 #include "algo/elastic_multiscatter.hpp"
@@ -353,11 +354,38 @@ void time_pair_loops(Probe& p, const std::string& name, const PairInputs& in) {
   });
 }
 
+// The frame-buffer z-buffer's inputs with the picture's triangles in a scattered order (a fixed
+// shuffle): the same triangles, spans and fragments as in file order, their far lines many more,
+// as a scanned mesh listed without locality has them (the bunny's file: docs/machines.md). The
+// vertices follow the shuffled triangles (renumbered by first use): read in a shuffled order
+// (the bone's 1.1 MB of projected vertices: more than a second-level cache of 1 MB), each
+// triangle's three would miss that cache too, a cost no counter has, which the fit put on the far
+// lines; the workloads read theirs in the order of a mesh listed with locality.
+struct ScatteredPicture {
+  Scene s;
+  NodeRenderer nr;
+  std::vector<ProjectedVertex> pv;
+  Framebuffer fb;
+  explicit ScatteredPicture(const Picture& pic)
+      : s(shuffled(pic.s)), nr(s), pv(probe_projected_vertices(nr, s)),
+        fb(nr.make_framebuffer(RowSet::all(pic.size))) {}
+  static Scene shuffled(Scene s) {
+    SplitMix64 rng(20261202);
+    for (std::size_t i = s.triangles.size(); i > 1; --i)
+      std::swap(s.triangles[i - 1], s.triangles[rng.next() % i]);
+    renumber_vertices_by_first_use(s);
+    return s;
+  }
+};
+
 // The loops of one scene at one size: projection, set-up, the frame-buffer z-buffer (set-up and
 // scan conversion, as elastic's slices and Blazek's nodes run it), Kurc et al.'s span lists and
 // active pixel z-buffer, the load estimate. `kurc`: also the active merge and the output (final
 // pixels packed, unpacked and pasted into the picture), on this picture's active pixels.
-void render_loops(Probe& p, const Picture& pic, bool kurc) {
+// `scattered`: also the z-buffer on the triangles scattered (ScatteredPicture), timed in the same
+// rounds as in file order: the fit prices far lines on the difference, and timed apart, minutes
+// later, the host's drift between the two went into it.
+void render_loops(Probe& p, const Picture& pic, bool kurc, bool scattered) {
   const Scene& s = pic.s;
   const int size = pic.size;
   const NodeRenderer nr(s);
@@ -394,6 +422,12 @@ void render_loops(Probe& p, const Picture& pic, bool kurc) {
           draw_batch(one, nr.shade(), fb, c);
         }
       });
+  std::unique_ptr<ScatteredPicture> shuffled;
+  if (scattered) {
+    shuffled = std::make_unique<ScatteredPicture>(pic);
+    time_zbuffer_loop(p, pic.name + " scattered", shuffled->s, shuffled->nr, shuffled->pv,
+                      shuffled->fb);
+  }
   std::vector<RowExtent> ext(s.triangles.size());
   p.time(kEstimateLoops, pic.name, [&](Counters& c) {
     for (std::size_t i = 0; i < s.triangles.size(); ++i) {
@@ -452,26 +486,6 @@ void active_loops(Probe& p, const Picture& pic, bool whole) {
            [&](Counters& c) { (void)zbuffer_spans(all_lists, all, nr.shade(), pic.size, c); });
   p.time(kActiveLoops, pic.name + " one node of two",
          [&](Counters& c) { (void)zbuffer_spans(half_lists, half, nr.shade(), pic.size, c); });
-  p.run();
-}
-
-// The frame-buffer z-buffer on the picture's triangles in a scattered order (a fixed shuffle):
-// the same triangles, spans and fragments as in file order, their far lines many more, as a
-// scanned mesh listed without locality has them (the bunny's file: docs/machines.md). The
-// vertices follow the shuffled triangles (renumbered by first use): read in a shuffled order
-// (the bone's 1.1 MB of projected vertices: more than a second-level cache of 1 MB), each
-// triangle's three would miss that cache too, a cost no counter has, which the fit put on the far
-// lines; the workloads read theirs in the order of a mesh listed with locality.
-void scattered_loops(Probe& p, const Picture& pic) {
-  Scene s = pic.s;
-  SplitMix64 rng(20261202);
-  for (std::size_t i = s.triangles.size(); i > 1; --i)
-    std::swap(s.triangles[i - 1], s.triangles[rng.next() % i]);
-  renumber_vertices_by_first_use(s);
-  const NodeRenderer nr(s);
-  const std::vector<ProjectedVertex> pv = probe_projected_vertices(nr, s);
-  Framebuffer fb = nr.make_framebuffer(RowSet::all(pic.size));
-  time_zbuffer_loop(p, pic.name + " scattered", s, nr, pv, fb);
   p.run();
 }
 
@@ -728,16 +742,12 @@ CpuProbe measure_cpu(const std::string& root, double min_seconds, const ProbeRan
   // then price the far lines alone. MultiScatter's triangle records: the bone's triangles among
   // 1 and 2 nodes. Three bones overlapping, and a pair's node's half of the triangles: the active
   // z-buffer's tested and appended pixels in other proportions than the bone's.
-  render_loops(p, load(root + "/scenes/bone.json", 512), false);
-  render_loops(p, load(root + "/scenes/bone.json", 1024), false);
-  render_loops(p, load(root + "/scenes/bone.json", 2048), false);
-  render_loops(p, load(root + "/scenes/bone.json", 4096), true);
+  render_loops(p, load(root + "/scenes/bone.json", 512), false, true);
+  render_loops(p, load(root + "/scenes/bone.json", 1024), false, true);
+  render_loops(p, load(root + "/scenes/bone.json", 2048), false, true);
+  render_loops(p, load(root + "/scenes/bone.json", 4096), true, true);
   active_loops(p, load(root + "/scenes/bone.json", 4096), false);
   active_loops(p, load(root + "/scenes/bones.json", 2048), true);
-  scattered_loops(p, load(root + "/scenes/bone.json", 512));
-  scattered_loops(p, load(root + "/scenes/bone.json", 1024));
-  scattered_loops(p, load(root + "/scenes/bone.json", 2048));
-  scattered_loops(p, load(root + "/scenes/bone.json", 4096));
   for (int size : {512, 1024, 2048, 4096})
     near_loops(p, load(root + "/scenes/bone.json", size));
   near_loops(p, load(root + "/scenes/blazek/thesis_spheres_16.json", 512));
