@@ -66,36 +66,42 @@ TEST(RecentLines, DrawBatchCountsTheSpansLinesOutsideTheWindow) {
 }
 
 TEST(RecentLines, DistantLinesAreFarLinesOutsideTheLastLevelWindow) {
-  // 200,000 lines: after the clear, the window's slot j holds the last line j + 8,192 k below
-  // 200,000, the last-level window's slot j the last line j + 131,072 k.
+  constexpr std::size_t W = RecentLines::kWindow, L = RecentLines::kLlcWindow;
+  static_assert(L % W == 0 && L >= 2 * W, "the windows nest");
+  // N = 3.75 L lines: after the clear, the window's slot j holds the last line j + W k below N,
+  // the last-level window's slot j the last line j + L k.
+  const std::size_t N = 3 * L + 3 * L / 4;
   RecentLines r;
-  r.reset(16 * 200000);
+  r.reset(16 * N);
   std::uint64_t distant = 0;
-  EXPECT_EQ(r.enter(0, 0, &distant), 1u); // line 0: its slots hold 196,608 and 131,072
+  EXPECT_EQ(r.enter(0, 0, &distant), 1u); // line 0: both its slots hold later lines
   EXPECT_EQ(distant, 1u);
-  EXPECT_EQ(r.enter(16 * 131077, 16 * 131077, &distant), 1u); // far (196,613 in its slot) ...
-  EXPECT_EQ(distant, 1u);                                     // ... but in the last-level one
-  EXPECT_EQ(r.enter(0, 15, &distant), 0u);                    // line 0 again: near
+  // Line 3 L + 5 is the last of its last-level slot (3 L + 5 + L > N), not of its window slot
+  // (3 L + 5 + W < N): far, but in the last-level window.
+  EXPECT_EQ(r.enter(16 * (3 * L + 5), 16 * (3 * L + 5), &distant), 1u);
   EXPECT_EQ(distant, 1u);
-  // Line 8,192 evicts line 0 from the window, not from the last-level window: 0 is far again,
-  // not distant.
-  EXPECT_EQ(r.enter(16 * 8192, 16 * 8192, &distant), 1u);
-  EXPECT_EQ(distant, 2u); // 8,192 itself: its last-level slot held 139,264
+  EXPECT_EQ(r.enter(0, 15, &distant), 0u); // line 0 again: near
+  EXPECT_EQ(distant, 1u);
+  // Line W evicts line 0 from the window, not from the last-level window: 0 is far again, not
+  // distant.
+  EXPECT_EQ(r.enter(16 * W, 16 * W, &distant), 1u);
+  EXPECT_EQ(distant, 2u); // W itself: its last-level slot held 3 L + W
   EXPECT_EQ(r.enter(0, 0, &distant), 1u);
   EXPECT_EQ(distant, 2u);
-  // A buffer of at most 131,072 lines has far lines but no distant one (entered in order, each
-  // line evicts from the window the one its slot held before that one is entered: all far).
+  // A buffer of at most L lines has far lines but no distant one (entered in order, each line
+  // evicts from the window the one its slot held before that one is entered: all far).
   RecentLines llc;
-  llc.reset(16 * 131072);
+  llc.reset(16 * L);
   std::uint64_t none = 0;
-  EXPECT_EQ(llc.enter(0, 16 * 131072 - 1, &none), 131072u);
+  EXPECT_EQ(llc.enter(0, 16 * L - 1, &none), L);
   EXPECT_EQ(none, 0u);
 }
 
 TEST(RecentLines, DrawBatchCountsDistantLinesInAFrameBufferBeyondTheLastLevelWindow) {
-  // The right triangle (rows 0-6) in 2,048 x 1,100: 140,800 lines, 128 a row. After the clear
-  // the last-level window holds lines 9,728 and above in the slots below 9,728: every span's
-  // first line (128 y) is far and distant; drawn again, neither.
+  // The right triangle (rows 0-6) in 2,048 x 1,100: 140,800 lines, 128 a row, 8 L + 9,728. After
+  // the clear the last-level window holds lines 8 L and above in the slots below 9,728: every
+  // span's first line (128 y) is far and distant; drawn again, neither.
+  static_assert(140800 % RecentLines::kLlcWindow == 9728);
   const int w = 2048, h = 1100;
   Framebuffer fb(w, RowSet::all(h), glm::vec3(0));
   Counters c;
@@ -106,7 +112,9 @@ TEST(RecentLines, DrawBatchCountsDistantLinesInAFrameBufferBeyondTheLastLevelWin
   draw_right_triangle(fb, h, c);
   EXPECT_EQ(c.far_lines, 7u);
   EXPECT_EQ(c.distant_lines, 7u);
-  // The 1,024 x 256 buffer of the test above fits the last-level window: far lines, none distant.
+  // The 1,024 x 256 buffer of the test above (16,384 lines) fits the last-level window: far lines,
+  // none distant.
+  static_assert(1024 * 256 / 16 <= RecentLines::kLlcWindow);
   Framebuffer small(1024, RowSet::all(256), glm::vec3(0));
   Counters s;
   draw_right_triangle(small, 256, s);
