@@ -157,8 +157,8 @@ const std::vector<Block>& blocks() {
       {"near z-buffer", {kEdges, kSpans, kPixels}},
       // The frame-buffer z-buffer on whole pictures, less the above: its far lines (the scattered
       // orders: the same triangles, other far lines), and of them the distant ones, from main
-      // memory rather than the last-level cache (the bone at 2048 and 4096: frame buffers of 50
-      // and 200 MB; at 512 and 1024, 3 and 12 MB, it has none).
+      // memory rather than the last-level cache's share (the bone at 1024, 2048 and 4096: frame
+      // buffers of 12, 50 and 200 MB; at 512, 3 MB, it has none).
       {"z-buffer", {kFarLines, kDistantLines}},
       {"span lists", {kSort}},
       // Kurc et al.'s active z-buffer, less its span starts and fragments: a pixel tested through
