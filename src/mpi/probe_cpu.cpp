@@ -382,10 +382,10 @@ struct ScatteredPicture {
 // scan conversion, as elastic's slices and Blazek's nodes run it), Kurc et al.'s span lists and
 // active pixel z-buffer, the load estimate. `kurc`: also the active merge and the output (final
 // pixels packed, unpacked and pasted into the picture), on this picture's active pixels.
-// `scattered`: also the z-buffer on the triangles scattered (ScatteredPicture), timed in the same
-// rounds as in file order: the fit prices far lines on the difference, and timed apart, minutes
-// later, the host's drift between the two went into it.
-void render_loops(Probe& p, const Picture& pic, bool kurc, bool scattered) {
+// Also the z-buffer on the triangles scattered (ScatteredPicture), timed in the same rounds as in
+// file order: the fit prices far lines on the difference, and timed apart, minutes later, the
+// host's drift between the two went into it.
+void render_loops(Probe& p, const Picture& pic, bool kurc) {
   const Scene& s = pic.s;
   const int size = pic.size;
   const NodeRenderer nr(s);
@@ -422,12 +422,9 @@ void render_loops(Probe& p, const Picture& pic, bool kurc, bool scattered) {
           draw_batch(one, nr.shade(), fb, c);
         }
       });
-  std::unique_ptr<ScatteredPicture> shuffled;
-  if (scattered) {
-    shuffled = std::make_unique<ScatteredPicture>(pic);
-    time_zbuffer_loop(p, pic.name + " scattered", shuffled->s, shuffled->nr, shuffled->pv,
-                      shuffled->fb);
-  }
+  const auto scattered = std::make_unique<ScatteredPicture>(pic);
+  time_zbuffer_loop(p, pic.name + " scattered", scattered->s, scattered->nr, scattered->pv,
+                    scattered->fb);
   std::vector<RowExtent> ext(s.triangles.size());
   p.time(kEstimateLoops, pic.name, [&](Counters& c) {
     for (std::size_t i = 0; i < s.triangles.size(); ++i) {
@@ -742,10 +739,10 @@ CpuProbe measure_cpu(const std::string& root, double min_seconds, const ProbeRan
   // then price the far lines alone. MultiScatter's triangle records: the bone's triangles among
   // 1 and 2 nodes. Three bones overlapping, and a pair's node's half of the triangles: the active
   // z-buffer's tested and appended pixels in other proportions than the bone's.
-  render_loops(p, load(root + "/scenes/bone.json", 512), false, true);
-  render_loops(p, load(root + "/scenes/bone.json", 1024), false, true);
-  render_loops(p, load(root + "/scenes/bone.json", 2048), false, true);
-  render_loops(p, load(root + "/scenes/bone.json", 4096), true, true);
+  render_loops(p, load(root + "/scenes/bone.json", 512), false);
+  render_loops(p, load(root + "/scenes/bone.json", 1024), false);
+  render_loops(p, load(root + "/scenes/bone.json", 2048), false);
+  render_loops(p, load(root + "/scenes/bone.json", 4096), true);
   active_loops(p, load(root + "/scenes/bone.json", 4096), false);
   active_loops(p, load(root + "/scenes/bones.json", 2048), true);
   for (int size : {512, 1024, 2048, 4096})

@@ -203,12 +203,12 @@ verdict = re.search(r"\*\*Verdict: (steady host|the host was not steady)", readm
 assert verdict, "no steadiness verdict"
 assert (verdict.group(1) == "steady host") == all(v != "unsteady" for v, _, _ in rows), rows
 assert all((v == "-") == (d == "-") == (r == "-") for v, d, r in rows), "drifts: " + str(rows)
-# The reference loop: around the probe and around every point (before and after).
 # Each rank's phases of a two-rank point, measured and predicted, under the point's phases.
 ranks = list(csv.DictReader(open(sys.argv[1].replace("comparison.csv", "measured_ranks.csv"))))
 assert {r["rank"] for r in ranks if r["nodes"] == "2" and r["workload"] == "pair-rs"} == {"0", "1"}
 assert readme.count("| phase | rank 0: measured (s) | predicted (s) | error | rank 1: measured") == 3, \
     "rank-by-rank tables of the three two-rank points without a host computer"
+# The reference loop: around the probe and around every point (before and after).
 refs = list(csv.DictReader(open(sys.argv[1].replace("comparison.csv", "reference.csv"))))
 assert len(refs) == 2 + 2 * 12 and all(float(r["seconds"]) > 0 for r in refs), refs
 PY
