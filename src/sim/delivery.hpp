@@ -28,7 +28,10 @@ namespace zc {
 
 class Delivery {
 public:
-  Delivery(SimNetwork& net, Fidelity fidelity, std::vector<simgrid::s4u::Host*> hosts);
+  // message_stack_kib: the stack of a message's actor under the flow fidelity (KiB, capped at
+  // contexts/stack-size).
+  Delivery(SimNetwork& net, Fidelity fidelity, std::vector<simgrid::s4u::Host*> hosts,
+           unsigned message_stack_kib);
 
   // Sends at the current virtual time; the message's arrival is set now or later. The network is
   // charged m.charged bytes, whatever the payload's size. A message of several blocks comes as
@@ -103,6 +106,7 @@ private:
   Fidelity fidelity_;
   Wakeups wakeups_;
   std::vector<simgrid::s4u::Host*> hosts_;
+  unsigned message_stack_kib_;
   int ranks_;
   std::vector<Inbox> inboxes_;
   std::vector<Waiter> waiters_;             // ranks, then the network actor

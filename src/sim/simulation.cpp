@@ -64,6 +64,15 @@ void add_cpu_and_what_ifs(nlohmann::json& j, const PlatformModel& pm, const Over
 // faults a rank). The threshold is fixed at the stack's size, so stacks stay on fresh pages;
 // smaller buffers stay on the heap, whose top is trimmed only past twice that, as the dynamic rule
 // would.
+// The stack of a message's actor under the flow fidelity, in KiB. Its code (a SimGrid transfer)
+// ran in 8 KiB with guard pages on, and faulted in 4; SimGrid's debug logging, which formats on
+// the actor's stack, ran in 16 and faulted in 8. 16 KiB, or 64 when a run sets any log level.
+unsigned message_stack_kib(const std::vector<std::string>& simgrid_args) {
+  const bool logs = std::ranges::any_of(
+      simgrid_args, [](const std::string& a) { return a.starts_with("--log="); });
+  return logs ? 64 : 16;
+}
+
 void keep_stacks_on_fresh_pages() {
   const long stack = long(simgrid::config::get_value<int>("contexts/stack-size")) * 1024;
   if (stack < (1L << 20)) return; // a small stack is cheap to clear; keep glibc's rule
@@ -150,7 +159,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
     hosts.push_back(e.host_by_name(node_host_name(r)));
   hosts.push_back(e.host_by_name(kHostComputerName));
   SimNetwork net(pm.net, pm.topology, P, cfg.fidelity, hosts);
-  Delivery delivery(net, cfg.fidelity, hosts);
+  Delivery delivery(net, cfg.fidelity, hosts, message_stack_kib(cfg.simgrid_args));
 
   std::vector<NodeStats> stats(P + 1);
   if (cfg.timeline)
