@@ -9,18 +9,26 @@ namespace {
 constexpr std::size_t kPackedBlockHeader = 4 + 8 + 8; // i32 owner, u64 size, u64 charged
 }
 
+std::size_t blocks_charged(std::size_t count, std::size_t charged) {
+  return kBlocksFrameBytes + kBlockFrameBytes * count + charged;
+}
+
 std::size_t blocks_charged(const Blocks& blocks) {
-  std::size_t charged = kBlocksFrameBytes + kBlockFrameBytes * blocks.size();
+  std::size_t charged = 0;
   for (const auto& k : blocks)
     charged += k.data.charged;
-  return charged;
+  return blocks_charged(blocks.size(), charged);
+}
+
+std::size_t packed_blocks_size(std::size_t count, std::size_t payload_bytes) {
+  return 4 + kPackedBlockHeader * count + payload_bytes;
 }
 
 std::size_t packed_blocks_size(const Blocks& blocks) {
-  std::size_t total = 4 + kPackedBlockHeader * blocks.size();
+  std::size_t bytes = 0;
   for (const auto& k : blocks)
-    total += k.data.payload.size();
-  return total;
+    bytes += k.data.payload.size();
+  return packed_blocks_size(blocks.size(), bytes);
 }
 
 Message pack_blocks(const Blocks& blocks) {

@@ -42,11 +42,15 @@ using Blocks = std::vector<Block>;
 // a count (4 bytes), and an owner and a length a block (12 bytes each).
 constexpr std::size_t kBlocksFrameBytes = 4, kBlockFrameBytes = 12;
 std::size_t blocks_charged(const Blocks& blocks);
+// The same of `count` blocks whose charged sizes add up to `charged` (a replay's, sim/replay).
+std::size_t blocks_charged(std::size_t count, std::size_t charged);
 // The blocks as one payload (u32 count; per block i32 owner, u64 size, u64 charged; the data),
 // for a backend that sends bytes, and back. The payload size is what a report counts as sent.
 Message pack_blocks(const Blocks& blocks);
 Blocks unpack_blocks(const Message& m);
 std::size_t packed_blocks_size(const Blocks& blocks);
+// The same of `count` blocks of `payload_bytes` in all.
+std::size_t packed_blocks_size(std::size_t count, std::size_t payload_bytes);
 
 constexpr int kAnySource = -1;
 

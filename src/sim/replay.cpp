@@ -2,7 +2,6 @@
 
 #include <exception>
 #include <stdexcept>
-#include <unordered_map>
 
 #include "sim/sim_comm.hpp"
 #include "sim/simulation.hpp"
@@ -22,25 +21,21 @@ std::string& divergence() {
   throw std::runtime_error("replay diverged: " + why);
 }
 
-// Payloads of the recorded sizes, one per size, shared by every message of that size (no node
-// reads them).
-const Payload& dummy_payload(std::uint64_t size) {
-  static std::unordered_map<std::uint64_t, Payload> made;
-  auto it = made.find(size);
-  if (it == made.end()) it = made.emplace(size, Payload(Bytes(std::size_t(size)))).first;
-  return it->second;
+// A recorded send again: counted and charged as the recorded message, with no bytes (nobody reads
+// a replay's messages).
+SendHandle resend(SimComm& comm, const Call& c) {
+  return comm.isend_unread(c.peer, c.tag, std::size_t(c.size), std::size_t(c.charged), false);
 }
 
-Message dummy(std::uint64_t size, std::uint64_t charged) {
-  return {dummy_payload(size), std::size_t(charged)};
-}
-
-Blocks dummy_blocks(const std::vector<TracedBlock>& traced) {
-  Blocks b;
-  b.reserve(traced.size());
-  for (const TracedBlock& t : traced)
-    b.push_back({t.owner, dummy(t.size, t.charged)});
-  return b;
+// A recorded bundle of blocks again, counted and charged as the blocks' packed form.
+SendHandle resend_blocks(SimComm& comm, const Call& c, const std::vector<TracedBlock>& blocks) {
+  std::size_t bytes = 0, charged = 0;
+  for (const TracedBlock& b : blocks) {
+    bytes += std::size_t(b.size);
+    charged += std::size_t(b.charged);
+  }
+  return comm.isend_unread(c.peer, c.tag, packed_blocks_size(blocks.size(), bytes),
+                           blocks_charged(blocks.size(), charged), true);
 }
 
 // The phases a node program opened close when it unwinds (NodeContext::Phase, which every
@@ -140,16 +135,16 @@ void replay_call(NodeContext& ctx, SimComm& comm, const CallTrace& t, const Call
     ctx.release(c.bytes);
     break;
   case CallKind::Isend:
-    sends.add(c.handle, comm.isend(c.peer, c.tag, dummy(c.size, c.charged)));
+    sends.add(c.handle, resend(comm, c));
     break;
   case CallKind::IsendBlocks:
-    sends.add(c.handle, comm.isend_blocks(c.peer, c.tag, dummy_blocks(t.blocks.at(c.index))));
+    sends.add(c.handle, resend_blocks(comm, c, t.blocks.at(c.index)));
     break;
   case CallKind::Send:
-    comm.send(c.peer, c.tag, dummy(c.size, c.charged));
+    resend(comm, c)->wait();
     break;
   case CallKind::SendBlocks:
-    comm.send_blocks(c.peer, c.tag, dummy_blocks(t.blocks.at(c.index)));
+    resend_blocks(comm, c, t.blocks.at(c.index))->wait();
     break;
   case CallKind::Wait:
     sends.wait(c.handle);

@@ -88,6 +88,11 @@ SendHandle SimComm::isend(int dst, int tag, Message msg) {
   return post(dst, tag, std::move(msg), n, {}, false);
 }
 
+SendHandle SimComm::isend_unread(int dst, int tag, std::size_t payload_bytes, std::size_t charged,
+                                 bool bundle) {
+  return post(dst, tag, Message{{}, charged}, payload_bytes, {}, bundle);
+}
+
 // Counted as sent the bytes the packed form would have (what the MPI backend sends).
 SendHandle SimComm::isend_blocks(int dst, int tag, Blocks blocks) {
   const std::size_t n = packed_blocks_size(blocks);
