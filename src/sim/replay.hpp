@@ -2,10 +2,10 @@
 // Record and replay on the simulator (docs/architecture.md, "Record and replay"): a run recorded
 // once (run/call_trace.hpp) is replayed under other CPU costs, another network, fidelity or node
 // memory by the same SimContext and SimComm that run the algorithms, executing the recorded calls
-// with messages counted and charged at the recorded sizes but no bytes behind them; the report is the one a full run would write. A
-// replay that the trace cannot reproduce (a receive from any source that gets another source, a
-// node out of memory with sends in flight, another node count or topology) is abandoned: the
-// caller runs the point in full.
+// with messages counted and charged at the recorded sizes but no bytes behind them; the report is
+// the one a full run would write. A replay that the trace cannot reproduce (a receive from any
+// source that gets another source, a node out of memory with sends in flight, another node count
+// or topology) is abandoned: the caller runs the point in full.
 #include <memory>
 #include <optional>
 #include <string>
