@@ -10,8 +10,13 @@ With OUT/after/predicted/ (the same predictions from a second probe, made after 
 the host's steadiness is checked: a point whose two predictions differ by more than a target (a
 judged figure) is not judged, and the exit status is 3 (the README's verdict line says which).
 With OUT/reference.csv (a reference loop timed around the probe and right before and after every
-point), so is a point whose reference moved by more than REF_TOL from the probe's.
+point), the host's speed around each point is measured against the probe's: the point's prediction
+is also shown scaled by it (host-corrected), and a point whose reference moved by more than REF_TOL
+from the probe's is not judged on its raw error but on its host-corrected one, unless the host
+changed during the probe or the point (its reference before and after it differ by more than
+REF_TOL): then it is not judged.
 """
+import math
 import csv
 import json
 import os
@@ -108,20 +113,35 @@ def drift(before, after, judged):
     return worst, beyond
 
 
+class Reference:
+    """reference.csv: the reference loop's times around the probe and around every point."""
+
+    def __init__(self, path):
+        self.times = {}  # point -> [seconds, before then after]
+        for r in csv.DictReader(open(path)):
+            self.times.setdefault(r["point"], []).append(float(r["seconds"]))
+        self.base = statistics.median(self.times["probe"])
+
+    def moved(self, point):
+        """The point's largest relative change from the probe's reference (before or after it)."""
+        return max((t / self.base - 1 for t in self.times[point]), key=abs)
+
+    def factor(self, point):
+        """How much slower the host ran around the point than around the probe: the geometric
+        mean of its references over the probe's."""
+        t = self.times[point]
+        return math.exp(sum(math.log(x) for x in t) / len(t)) / self.base
+
+    def changed(self, point):
+        """The largest change between the reference's two sides (before and after) of the point
+        or of the probe: the host changed while it ran."""
+        def spread(t):
+            return max(t) / min(t) - 1
+        return max(spread(self.times[point]), spread(self.times["probe"]))
+
+
 def load_reference(path):
-    """The reference loop's time the probe saw (the median of its rows) and each point's largest
-    relative change from it (before or after the point), or None without reference.csv."""
-    if not os.path.exists(path):
-        return None
-    rows = list(csv.DictReader(open(path)))
-    base = statistics.median(float(r["seconds"]) for r in rows if r["point"] == "probe")
-    moved = {}
-    for r in rows:
-        if r["point"] != "probe":
-            d = float(r["seconds"]) / base - 1
-            if abs(d) >= abs(moved.get(r["point"], 0.0)):
-                moved[r["point"]] = d
-    return moved
+    return Reference(path) if os.path.exists(path) else None
 
 
 def main():
@@ -155,28 +175,33 @@ def main():
             for ph, v in runs[key].items()
         }
         total = med["total"]
+        # The host's speed around the point against the probe's: 1 without reference.csv.
+        ref_point = f"{name}-{p}"
+        factor = reference.factor(ref_point) if reference and ref_point in reference.times else 1.0
         lines = []
         ok = True
         judged_figures = []
         for ph in order[key] + [x for x in pp if x not in order[key]]:
             m, s, pr = med.get(ph), spread.get(ph), pp.get(ph)
             err = (pr - m) / m if m and pr is not None and m > 0 else None
+            fixed = (pr * factor - m) / m if err is not None else None
             share = m / total if m is not None and total > 0 else 0
             tol = TOTAL_TOL if ph == "total" else PHASE_TOL
             judged = ph == "total" or share > PHASE_SHARE
-            good = err is not None and abs(err) <= tol
+            good = fixed is not None and abs(fixed) <= tol
             if judged and not over:
                 ok = ok and good
                 judged_figures.append(ph)
-            rows.append([name, p, procs[key], ph, m, s, pr, err, share])
+            rows.append([name, p, procs[key], ph, m, s, pr, err, factor, fixed, share])
             lines.append(
-                "| %s | %s | %s | %s | %s | %s |"
+                "| %s | %s | %s | %s | %s | %s | %s |"
                 % (
                     ph,
                     fmt(m) if m is not None else "",
                     pct(s) if s is not None else "",
                     fmt(pr) if pr is not None else "",
                     pct(err) if err is not None else "",
+                    pct(fixed) if fixed is not None else "",
                     ("**%.0f %%**" if judged else "%.0f %%") % (100 * share),
                 )
             )
@@ -186,9 +211,10 @@ def main():
                                  judged_figures)
             if abs(moved) > abs(worst_drift):
                 worst_drift = moved
-        ref = None if reference is None or over else reference.get(f"{name}-{p}")
-        if ref is not None:
-            shaky = shaky or abs(ref) > REF_TOL
+        has_ref = reference is not None and not over and ref_point in reference.times
+        ref = reference.moved(ref_point) if has_ref else None
+        if has_ref:
+            shaky = shaky or reference.changed(ref_point) > REF_TOL
             if abs(ref) > abs(worst_ref):
                 worst_ref = ref
         if not over:
@@ -197,7 +223,7 @@ def main():
             failed += not ok and not shaky
         verdict = "-" if over else ("unsteady" if shaky else ("yes" if ok else "no"))
         totals.append(
-            "| %s | %d | %d%s | %s | %s | %s | %s | %s | %s | %s | %s |"
+            "| %s | %d | %d%s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |"
             % (
                 name,
                 p,
@@ -207,16 +233,20 @@ def main():
                 pct(spread["total"]),
                 fmt(pp["total"]),
                 pct((pp["total"] - total) / total),
+                "%.3f" % factor,
+                pct((pp["total"] * factor - total) / total),
                 verdict,
                 "%.0f %%" % (100 * statistics.median(shares[key])) if key in shares else "",
                 "-" if over or not checked else pct(moved),
                 "-" if ref is None else pct(ref),
+                "-" if not has_ref else pct(reference.changed(ref_point)),
             )
         )
         details.append(
             f"### {name}, P = {p} ({procs[key]} processes{', oversubscribed' if over else ''})\n\n"
-            "| phase | measured median (s) | spread | predicted (s) | error | share of the run |\n"
-            "|---|---|---|---|---|---|\n" + "\n".join(lines) + "\n"
+            "| phase | measured median (s) | spread | predicted (s) | error | host-corrected error "
+            "| share of the run |\n"
+            "|---|---|---|---|---|---|---|\n" + "\n".join(lines) + "\n"
         )
         shown = [ph for ph in judged_figures if ph != "total"]
         if p > 1 and key in rank_runs and shown:
@@ -227,7 +257,7 @@ def main():
     with open(os.path.join(out, "comparison.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["workload", "nodes", "processes", "phase", "measured_median_s", "spread",
-                    "predicted_s", "rel_error", "share"])
+                    "predicted_s", "rel_error", "host_factor", "host_corrected_rel_error", "share"])
         for r in rows:
             w.writerow([("" if v is None else (repr(v) if isinstance(v, float) else v)) for v in r])
     probe = open(os.path.join(out, "probe.txt")).read().strip()
@@ -239,13 +269,13 @@ def main():
     elif unsteady:
         steadiness = (f"**Verdict: the host was not steady, {unsteady} point(s) not judged**: the "
                       "probe after the measured runs moves their prediction (a judged figure) by "
-                      f"more than its target, or the reference loop around them moved by more than "
-                      f"{REF_TOL:.0%} from the probe's (largest changes {pct(worst_drift)}"
-                      f"{ref_text}); run again on a quiet machine.")
+                      f"more than its target, or the reference loop changed by more than "
+                      f"{REF_TOL:.0%} between its two sides of the point or of the probe (largest "
+                      f"changes {pct(worst_drift)}{ref_text}); run again on a quiet machine.")
     else:
         ref_ok = ("" if reference is None else
-                  f", and the reference loop around every point is within {REF_TOL:.0%} of the "
-                  "probe's")
+                  f", and the reference loop changed by at most {REF_TOL:.0%} across the probe "
+                  "and across every point")
         steadiness = ("**Verdict: steady host**: the probe after the measured runs predicts every "
                       f"judged figure within its target of the probe before{ref_ok} (largest "
                       f"changes {pct(worst_drift)}{ref_text}).")
@@ -279,19 +309,26 @@ shared-memory transport copied large messages by {single_copy_text(cond.get('sin
    wants it, so below 100 % other programs ran on a rank's core during the run (at oversubscribed
    points the ranks themselves).
 4. Targets: the total within {TOTAL_TOL:.0%}, every phase above {PHASE_SHARE:.0%} of the run (bold
-   share) within {PHASE_TOL:.0%}, at every point that is not oversubscribed: **{passed} met,
-   {failed} not**{f", {unsteady} not judged (unsteady)" if unsteady else ""}.
+   share) within {PHASE_TOL:.0%}, at every point that is not oversubscribed, on the host-corrected
+   error (step 5): **{passed} met, {failed} not**{f", {unsteady} not judged (unsteady)" if unsteady else ""}.
 5. The host's steadiness: `mpirun -np 2 zcube probe` again after the measured runs (`after/`), every
    point predicted again on its platforms; the probe drift is the largest change of a judged figure
    between the two predictions. A point whose drift passes a target (the total's {TOTAL_TOL:.0%}, a
-   phase's {PHASE_TOL:.0%}) measured a machine that changed under it: it is not judged. So is a
-   point whose reference loop (`reference.csv`: the sequential z-buffer of the bunny on one
-   process, timed right before and after the probe and right before and after every point) moved
-   by more than {REF_TOL:.0%} from the probe's (the reference drift, the larger of before and after).
+   phase's {PHASE_TOL:.0%}) measured a machine that changed under it: it is not judged.
+   The reference loop (`reference.csv`: the sequential z-buffer of the bunny on one process, timed
+   right before and after the probe and right before and after every point) measures the host's
+   speed around each point against the probe's: the **host factor** is the geometric mean of the
+   point's two references over the median of the probe's two. The **host-corrected error** is the
+   prediction times that factor against the measured time, every phase scaled alike (first order:
+   the host slower by x on the reference's mix of CPU and memory work is slower by x on the
+   workload's); the raw error is shown beside it, and the reference drift is the point's largest
+   change from the probe's. A point across which the reference itself changed by more than
+   {REF_TOL:.0%} (its two sides, or the probe's two sides: the "reference change" column) measured a
+   host that changed during it: it is not judged.
    {steadiness}
 
-| workload | P | processes | measured median (s) | spread | predicted (s) | error | targets met | core share | probe drift | reference drift |
-|---|---|---|---|---|---|---|---|---|---|---|
+| workload | P | processes | measured median (s) | spread | predicted (s) | error | host factor | host-corrected error | targets met | core share | probe drift | reference drift | reference change |
+|---|---|---|---|---|---|---|---|---|---|---|---|---|---|
 """
         )
         f.write("\n".join(totals) + "\n\n## Phase by phase\n\n" + "\n".join(details))

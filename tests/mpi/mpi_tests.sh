@@ -194,9 +194,10 @@ assert {(r["workload"], r["nodes"]) for r in shares} == want, "core shares: " + 
 assert all(0 < float(r["core_share"]) < 4 for r in shares), shares
 readme = open(sys.argv[1].replace("comparison.csv", "README.md")).read()
 import re
-assert "| targets met | core share | probe drift | reference drift |" in readme, "no drift columns"
-rows = re.findall(r"\| (yes|no|unsteady|-) \| [0-9]+ % \| ([-+][0-9.]+ %|-) \| ([-+][0-9.]+ %|-) \|$",
-                  readme, re.M)
+assert ("| host factor | host-corrected error | targets met | core share | probe drift | "
+        "reference drift | reference change |") in readme, "no host-corrected or drift columns"
+rows = re.findall(r"\| (yes|no|unsteady|-) \| [0-9]+ % \| ([-+][0-9.]+ %|-) \| ([-+][0-9.]+ %|-) "
+                  r"\| (?:[-+][0-9.]+ %|-) \|$", readme, re.M)
 assert len(rows) == 12, "core shares or drifts missing"
 # A point not judged for an unsteady host is said so, and the verdict line matches the table.
 verdict = re.search(r"\*\*Verdict: (steady host|the host was not steady)", readme)
@@ -211,6 +212,20 @@ assert readme.count("| phase | rank 0: measured (s) | predicted (s) | error | ra
 # The reference loop: around the probe and around every point (before and after).
 refs = list(csv.DictReader(open(sys.argv[1].replace("comparison.csv", "reference.csv"))))
 assert len(refs) == 2 + 2 * 12 and all(float(r["seconds"]) > 0 for r in refs), refs
+# The host factor: the geometric mean of a point's two references over the median of the probe's,
+# and the host-corrected error the prediction scaled by it.
+import math, statistics
+by = {}
+for r in refs:
+    by.setdefault(r["point"], []).append(float(r["seconds"]))
+base = statistics.median(by["probe"])
+for r in csv.DictReader(open(sys.argv[1])):
+    t = by[f"{r['workload']}-{r['nodes']}"]
+    f = math.sqrt(t[0] * t[1]) / base
+    assert abs(float(r["host_factor"]) / f - 1) < 1e-9, (r, f)
+    if r["host_corrected_rel_error"]:
+        m, p = float(r["measured_median_s"]), float(r["predicted_s"])
+        assert abs(float(r["host_corrected_rel_error"]) - (p * f - m) / m) < 1e-9, r
 PY
     [ "$rc" = 3 ] && ! grep -q "not steady" "$tmp/v/README.md" && bad "exit 3 without its verdict"
   fi
