@@ -114,12 +114,16 @@ def drift(before, after, judged):
 
 
 class Reference:
-    """reference.csv: the reference loop's times around the probe and around every point."""
+    """reference.csv: the reference loop's times around the probe and around every point, one or
+    more runs on each side (before, after); a side's time is the median of its runs."""
 
     def __init__(self, path):
-        self.times = {}  # point -> [seconds, before then after]
+        runs = {}  # (point, side) -> [seconds]
         for r in csv.DictReader(open(path)):
-            self.times.setdefault(r["point"], []).append(float(r["seconds"]))
+            runs.setdefault((r["point"], r["when"]), []).append(float(r["seconds"]))
+        self.times = {}  # point -> [a side's median, before then after]
+        for (point, _), t in runs.items():
+            self.times.setdefault(point, []).append(statistics.median(t))
         self.base = statistics.median(self.times["probe"])
 
     def moved(self, point):
@@ -128,12 +132,12 @@ class Reference:
 
     def factor(self, point):
         """How much slower the host ran around the point than around the probe: the geometric
-        mean of its references over the probe's."""
+        mean of its two sides over the probe's (the median of the probe's two)."""
         t = self.times[point]
         return math.exp(sum(math.log(x) for x in t) / len(t)) / self.base
 
     def changed(self, point):
-        """The largest change between the reference's two sides (before and after) of the point
+        """The larger change between the reference's two sides (before and after) of the point
         or of the probe: the host changed while it ran."""
         def spread(t):
             return max(t) / min(t) - 1
@@ -315,8 +319,9 @@ shared-memory transport copied large messages by {single_copy_text(cond.get('sin
    point predicted again on its platforms; the probe drift is the largest change of a judged figure
    between the two predictions. A point whose drift passes a target (the total's {TOTAL_TOL:.0%}, a
    phase's {PHASE_TOL:.0%}) measured a machine that changed under it: it is not judged.
-   The reference loop (`reference.csv`: the sequential z-buffer of the bunny on one process, timed
-   right before and after the probe and right before and after every point) measures the host's
+   The reference loop (`reference.csv`: the sequential z-buffer of the bunny on one process, run
+   right before and after the probe and right before and after every point, a side's time the
+   median of its runs there) measures the host's
    speed around each point against the probe's: the **host factor** is the geometric mean of the
    point's two references over the median of the probe's two. The **host-corrected error** is the
    prediction times that factor against the measured time, every phase scaled alike (first order:
