@@ -10,11 +10,10 @@ With OUT/after/predicted/ (the same predictions from a second probe, made after 
 the host's steadiness is checked: a point whose two predictions differ by more than a target (a
 judged figure) is not judged, and the exit status is 3 (the README's verdict line says which).
 With OUT/reference.csv (a reference loop timed around the probe and right before and after every
-point), the host's speed around each point is measured against the probe's: the point's prediction
-is also shown scaled by it (host-corrected), and a point whose reference moved by more than REF_TOL
-from the probe's is not judged on its raw error but on its host-corrected one, unless the host
-changed during the probe or the point (its reference before and after it differ by more than
-REF_TOL): then it is not judged.
+point), the host's speed around each point is measured against the probe's: every prediction is
+also shown scaled by it (host-corrected), and the points are judged on their host-corrected errors;
+a point across which the host changed (the reference before and after it, or before and after the
+probe, differ by more than REF_TOL) is not judged.
 """
 import math
 import csv
