@@ -15,8 +15,8 @@ also shown scaled by it (host-corrected), and the points are judged on their hos
 a point across which the host changed (the reference before and after it, or before and after the
 probe, differ by more than REF_TOL) is not judged.
 """
-import math
 import csv
+import math
 import json
 import os
 import statistics
@@ -184,10 +184,12 @@ def main():
         lines = []
         ok = True
         judged_figures = []
+        errors = {}  # phase -> (raw error, host-corrected error)
         for ph in order[key] + [x for x in pp if x not in order[key]]:
             m, s, pr = med.get(ph), spread.get(ph), pp.get(ph)
             err = (pr - m) / m if m and pr is not None and m > 0 else None
             fixed = (pr * factor - m) / m if err is not None else None
+            errors[ph] = (err, fixed)
             share = m / total if m is not None and total > 0 else 0
             tol = TOTAL_TOL if ph == "total" else PHASE_TOL
             judged = ph == "total" or share > PHASE_SHARE
@@ -216,8 +218,9 @@ def main():
                 worst_drift = moved
         has_ref = reference is not None and not over and ref_point in reference.times
         ref = reference.moved(ref_point) if has_ref else None
+        changed = reference.changed(ref_point) if has_ref else None
         if has_ref:
-            shaky = shaky or reference.changed(ref_point) > REF_TOL
+            shaky = shaky or changed > REF_TOL
             if abs(ref) > abs(worst_ref):
                 worst_ref = ref
         if not over:
@@ -235,14 +238,14 @@ def main():
                 fmt(total),
                 pct(spread["total"]),
                 fmt(pp["total"]),
-                pct((pp["total"] - total) / total),
+                pct(errors["total"][0]),
                 "%.3f" % factor,
-                pct((pp["total"] * factor - total) / total),
+                pct(errors["total"][1]),
                 verdict,
                 "%.0f %%" % (100 * statistics.median(shares[key])) if key in shares else "",
                 "-" if over or not checked else pct(moved),
                 "-" if ref is None else pct(ref),
-                "-" if not has_ref else pct(reference.changed(ref_point)),
+                "-" if changed is None else pct(changed),
             )
         )
         details.append(

@@ -57,13 +57,6 @@ void add_cpu_and_what_ifs(nlohmann::json& j, const PlatformModel& pm, const Over
   j["what_if"] = w;
 }
 
-// A rank's stack (contexts/stack-size, 8 MiB) holds the few pages a node program uses. Without
-// guard pages (the flow fidelity) SimGrid allocates it zeroed: on fresh pages (glibc's mmap) that
-// costs nothing, but once a larger buffer freed earlier has raised glibc's dynamic mmap threshold
-// above the stack's size, the stack comes from the heap and is cleared page by page (2,048 page
-// faults a rank). The threshold is fixed at the stack's size, so stacks stay on fresh pages;
-// smaller buffers stay on the heap, whose top is trimmed only past twice that, as the dynamic rule
-// would.
 // The stack of a message's actor under the flow fidelity, in KiB. Its code (a SimGrid transfer)
 // ran in 8 KiB with guard pages on, and faulted in 4; SimGrid's debug logging, which formats on
 // the actor's stack, ran in 16 and faulted in 8. 16 KiB, or 64 when a run sets any log level.
@@ -73,6 +66,13 @@ unsigned message_stack_kib(const std::vector<std::string>& simgrid_args) {
   return logs ? 64 : 16;
 }
 
+// A rank's stack (contexts/stack-size, 8 MiB) holds the few pages a node program uses. Without
+// guard pages (the flow fidelity) SimGrid allocates it zeroed: on fresh pages (glibc's mmap) that
+// costs nothing, but once a larger buffer freed earlier has raised glibc's dynamic mmap threshold
+// above the stack's size, the stack comes from the heap and is cleared page by page (2,048 page
+// faults a rank). The threshold is fixed at the stack's size, so stacks stay on fresh pages;
+// smaller buffers stay on the heap, whose top is trimmed only past twice that, as the dynamic rule
+// would.
 void keep_stacks_on_fresh_pages() {
   const long stack = long(simgrid::config::get_value<int>("contexts/stack-size")) * 1024;
   if (stack < (1L << 20)) return; // a small stack is cheap to clear; keep glibc's rule
