@@ -72,7 +72,7 @@ ProjectedMesh::ProjectedMesh(NodeContext& ctx, const NodeRenderer& nr, const Mes
 bool ProjectedMesh::rows(const NodeRenderer& nr, std::uint32_t t, int& y0, int& y1) const {
   const Triangle& tr = mesh.tris[t].tri;
   const ProjectedVertex* pp[3] = {&pv[tr.v[0]], &pv[tr.v[1]], &pv[tr.v[2]]};
-  return row_extent(pp, nr.width(), nr.height(), y0, y1);
+  return nr.rows(mesh.tris[t].id, pp, y0, y1);
 }
 
 } // namespace zc::blazek

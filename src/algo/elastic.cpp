@@ -55,7 +55,7 @@ LocalLoad estimate_load(NodeContext& ctx, const NodeRenderer& nr,
     const Triangle& t = tris[i].tri;
     const ProjectedVertex* p[3] = {&pv.at(t.v[0]), &pv.at(t.v[1]), &pv.at(t.v[2])};
     RowExtent& e = load.extents[i];
-    if (!row_extent(p, nr.width(), H, e.y0, e.y1)) e = {1, 0}; // covers no row
+    if (!nr.rows(tris[i].id, p, e.y0, e.y1)) e = {1, 0}; // covers no row
   }
   load.rows = scan_load(load_differences(load.extents, H), H);
   Counters w;

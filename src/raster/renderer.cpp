@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 
+#include "raster/setup_cache.hpp"
 #include "raster/worker_pool.hpp"
 #include "raster/zbuffer.hpp"
 #include "util/block_split.hpp"
@@ -17,16 +18,25 @@ NodeRenderer::NodeRenderer(const Scene& scene, const Camera& camera)
 
 NodeRenderer::NodeRenderer(const Scene& scene, const Camera& camera, const Bounds& bounds)
     : view_(make_view(scene, camera, bounds)), shade_(ShadeContext::of(scene)),
-      background_(scene.background), cull_back_(scene.cull == CullMode::Back) {}
+      background_(scene.background), cull_back_(scene.cull == CullMode::Back),
+      setup_cache_(find_setup_cache(scene, view_, cull_back_)) {}
 
 void NodeRenderer::setup_projected(std::uint32_t id, const Triangle& tri,
                                    const ProjectedVertex* const p[3], const glm::vec2* uvs,
                                    TriangleBatch& out, Counters& c) const {
+  if (setup_cache_ && setup_cache_->setup(id, tri.material, p, out, c)) return;
   SetupInput in{{p[0], p[1], p[2]}, {nullptr, nullptr, nullptr}, id, tri.material};
   if (shade_.textures && uvs && (*shade_.materials)[tri.material].texture >= 0)
     for (int k = 0; k < 3; ++k)
       in.uv[k] = &uvs[tri.v[k]];
   setup_triangle(in, view_.width, view_.height, cull_back_, out, c);
+}
+
+bool NodeRenderer::rows(std::uint32_t id, const ProjectedVertex* const p[3], int& y0,
+                        int& y1) const {
+  const auto cached = setup_cache_ ? setup_cache_->rows(id, p, y0, y1) : SetupCache::Rows::Unknown;
+  if (cached != SetupCache::Rows::Unknown) return cached == SetupCache::Rows::Some;
+  return row_extent(p, view_.width, view_.height, y0, y1);
 }
 
 namespace {

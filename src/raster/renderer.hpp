@@ -15,6 +15,8 @@ namespace zc {
 
 // The per-node rendering toolkit the parallel algorithms use: a view, the scene's materials and
 // textures, and set-up of triangles whose projected vertices the caller supplies.
+class SetupCache;
+
 class NodeRenderer {
 public:
   explicit NodeRenderer(const Scene& scene);
@@ -45,6 +47,8 @@ public:
   // The same when the caller has looked up the projected vertices, p[0..2].
   void setup_projected(std::uint32_t id, const Triangle& tri, const ProjectedVertex* const p[3],
                        const glm::vec2* uvs, TriangleBatch& out, Counters& c) const;
+  // Rows [y0, y1] triangle `id` can touch from its projected vertices p[0..2] (row_extent).
+  bool rows(std::uint32_t id, const ProjectedVertex* const p[3], int& y0, int& y1) const;
 
   Framebuffer make_framebuffer(const RowSet& rows) const {
     return Framebuffer(view_.width, rows, background_);
@@ -55,6 +59,7 @@ private:
   ShadeContext shade_;
   glm::vec3 background_;
   bool cull_back_;
+  const SetupCache* setup_cache_; // this process's set-up of the scene, if it holds one
 };
 
 struct RenderResult {

@@ -12,6 +12,8 @@
 #include <tuple>
 
 #include "algo/algorithm.hpp"
+#include "raster/renderer.hpp"
+#include "raster/setup_cache.hpp"
 #include "repro/paper_figures.hpp"
 #include "run/report.hpp"
 #include "scene/load.hpp"
@@ -137,6 +139,47 @@ void prepare_references(const std::vector<SimConfig>& points, int jobs) {
   });
 }
 
+// The set-up of the cached scenes' triangles (raster/setup_cache.hpp), worked out before the batch
+// forks: its points then copy each triangle's set-up instead of computing it. A scene is held when
+// kSetupCacheUses points or more use it (a cache used twice barely pays for its building and its
+// mapping into each child), most triangles times uses first, up to kSetupCacheTriangles in all
+// (about 200 bytes a triangle: Blazek's four sphere scenes, 700,000 triangles, are 135 MB). Caches
+// of scenes this batch does not use are dropped.
+constexpr std::size_t kSetupCacheUses = 3;
+constexpr std::size_t kSetupCacheTriangles = 1'000'000;
+
+void prepare_setup_caches(const std::vector<SimConfig>& points) {
+  // ZCUBE_SETUP_CACHE=0: every node sets up its triangles itself (a check, and a baseline).
+  if (const char* v = std::getenv("ZCUBE_SETUP_CACHE"); v && std::string(v) == "0") {
+    drop_setup_caches([](const Scene&) { return false; });
+    return;
+  }
+  std::map<const Scene*, std::size_t> uses;
+  for (const auto& p : points)
+    if (const Scene* s = cached_scene(p); s && !s->textured()) ++uses[s];
+  std::vector<std::pair<double, std::shared_ptr<const Scene>>> by_work;
+  for (const auto& [k, s] : scene_cache())
+    if (const auto it = uses.find(s.get()); it != uses.end() && it->second >= kSetupCacheUses)
+      by_work.push_back({double(it->second) * double(s->triangles.size()), s});
+  std::stable_sort(by_work.begin(), by_work.end(),
+                   [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::set<const Scene*> chosen;
+  std::vector<std::shared_ptr<const Scene>> todo;
+  std::size_t held = 0;
+  for (const auto& [work, s] : by_work)
+    if (held + s->triangles.size() <= kSetupCacheTriangles) {
+      held += s->triangles.size();
+      chosen.insert(s.get());
+      if (!has_setup_cache(*s)) todo.push_back(s);
+    }
+  drop_setup_caches([&chosen](const Scene& s) { return chosen.contains(&s); });
+  // Built here, not on worker threads: a thread's temporaries stay in its malloc arena, which the
+  // batch then collapses into huge pages (copying it) before forking.
+  for (const auto& s : todo)
+    add_setup_cache(
+        std::make_unique<const SetupCache>(s, NodeRenderer(*s, s->camera, scene_facts(*s).bounds)));
+}
+
 // The cached scenes no point of `points` uses, and the references drawn from them, dropped before
 // the batch forks: each fork copies the page tables of all the memory the parent holds (the
 // calibration's runs, on Kurc's pots alone, would otherwise each copy those of Blazek's spheres).
@@ -153,6 +196,7 @@ void drop_unused_scenes(const std::vector<SimConfig>& points) {
     }
     const Scene* gone = it->second.get();
     std::erase_if(refs, [gone](const auto& r) { return std::get<0>(r.first) == gone; });
+    drop_setup_caches([gone](const Scene& s) { return &s != gone; });
     it = cache.erase(it);
   }
 }
@@ -315,6 +359,7 @@ simulate_batch(const std::vector<SimConfig>& points, int jobs,
   preload_scenes(points, jobs);
   prepare_references(points, jobs);
   check_platform_files(points);
+  prepare_setup_caches(points);
   const std::vector<std::size_t> order = longest_first(points);
   std::vector<SimConfig> sorted;
   for (const std::size_t i : order)
