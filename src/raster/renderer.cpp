@@ -21,10 +21,15 @@ NodeRenderer::NodeRenderer(const Scene& scene, const Camera& camera, const Bound
       background_(scene.background), cull_back_(scene.cull == CullMode::Back),
       setup_cache_(find_setup_cache(scene, view_, cull_back_)) {}
 
-void NodeRenderer::setup_projected(std::uint32_t id, const Triangle& tri,
-                                   const ProjectedVertex* const p[3], const glm::vec2* uvs,
-                                   TriangleBatch& out, Counters& c) const {
-  if (setup_cache_ && setup_cache_->setup(id, tri.material, p, out, c)) return;
+bool NodeRenderer::cached_setup(std::uint32_t id, const Triangle& tri,
+                                const ProjectedVertex* const p[3], TriangleBatch& out,
+                                Counters& c) const {
+  return setup_cache_->setup(id, tri.material, p, out, c);
+}
+
+void NodeRenderer::compute_setup(std::uint32_t id, const Triangle& tri,
+                                 const ProjectedVertex* const p[3], const glm::vec2* uvs,
+                                 TriangleBatch& out, Counters& c) const {
   SetupInput in{{p[0], p[1], p[2]}, {nullptr, nullptr, nullptr}, id, tri.material};
   if (shade_.textures && uvs && (*shade_.materials)[tri.material].texture >= 0)
     for (int k = 0; k < 3; ++k)
@@ -32,9 +37,9 @@ void NodeRenderer::setup_projected(std::uint32_t id, const Triangle& tri,
   setup_triangle(in, view_.width, view_.height, cull_back_, out, c);
 }
 
-bool NodeRenderer::rows(std::uint32_t id, const ProjectedVertex* const p[3], int& y0,
-                        int& y1) const {
-  const auto cached = setup_cache_ ? setup_cache_->rows(id, p, y0, y1) : SetupCache::Rows::Unknown;
+bool NodeRenderer::cached_rows(std::uint32_t id, const ProjectedVertex* const p[3], int& y0,
+                               int& y1) const {
+  const SetupCache::Rows cached = setup_cache_->rows(id, p, y0, y1);
   if (cached != SetupCache::Rows::Unknown) return cached == SetupCache::Rows::Some;
   return row_extent(p, view_.width, view_.height, y0, y1);
 }

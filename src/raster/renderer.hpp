@@ -44,17 +44,30 @@ public:
     const ProjectedVertex* const p[3] = {&pv[tri.v[0]], &pv[tri.v[1]], &pv[tri.v[2]]};
     setup_projected(id, tri, p, uvs, out, c);
   }
-  // The same when the caller has looked up the projected vertices, p[0..2].
+  // The same when the caller has looked up the projected vertices, p[0..2]: from this process's
+  // set-up cache when it holds the triangle (raster/setup_cache.hpp), else computed.
   void setup_projected(std::uint32_t id, const Triangle& tri, const ProjectedVertex* const p[3],
-                       const glm::vec2* uvs, TriangleBatch& out, Counters& c) const;
+                       const glm::vec2* uvs, TriangleBatch& out, Counters& c) const {
+    if (setup_cache_ && cached_setup(id, tri, p, out, c)) return;
+    compute_setup(id, tri, p, uvs, out, c);
+  }
   // Rows [y0, y1] triangle `id` can touch from its projected vertices p[0..2] (row_extent).
-  bool rows(std::uint32_t id, const ProjectedVertex* const p[3], int& y0, int& y1) const;
+  bool rows(std::uint32_t id, const ProjectedVertex* const p[3], int& y0, int& y1) const {
+    if (setup_cache_) return cached_rows(id, p, y0, y1);
+    return row_extent(p, view_.width, view_.height, y0, y1);
+  }
 
   Framebuffer make_framebuffer(const RowSet& rows) const {
     return Framebuffer(view_.width, rows, background_);
   }
 
 private:
+  bool cached_setup(std::uint32_t id, const Triangle& tri, const ProjectedVertex* const p[3],
+                    TriangleBatch& out, Counters& c) const;
+  bool cached_rows(std::uint32_t id, const ProjectedVertex* const p[3], int& y0, int& y1) const;
+  void compute_setup(std::uint32_t id, const Triangle& tri, const ProjectedVertex* const p[3],
+                     const glm::vec2* uvs, TriangleBatch& out, Counters& c) const;
+
   View view_;
   ShadeContext shade_;
   glm::vec3 background_;
