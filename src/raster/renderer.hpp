@@ -13,10 +13,10 @@
 
 namespace zc {
 
-// The per-node rendering toolkit the parallel algorithms use: a view, the scene's materials and
-// textures, and set-up of triangles whose projected vertices the caller supplies.
 class SetupCache;
 
+// The per-node rendering toolkit the parallel algorithms use: a view, the scene's materials and
+// textures, and set-up of triangles whose projected vertices the caller supplies.
 class NodeRenderer {
 public:
   explicit NodeRenderer(const Scene& scene);

@@ -6,10 +6,10 @@
 // set up 16.7 M triangles of four sphere scenes; each point read its triangles here instead.
 //
 // What a node gets is bit for bit what setup_triangle would give it, and so are its counters: a
-// triangle is answered from the cache only when its id, the picture's size and culling match and
-// its three projected vertices are bit for bit the cached ones; anything else (another camera,
-// polygons that travelled and were projected anew with other bits, a textured triangle) is set up
-// as before. The cache only saves host time; no modelled cost changes.
+// triangle is answered from the cache only when its id and material, the picture's size, the
+// culling and the camera match and its three projected vertices are bit for bit the cached ones;
+// anything else (another frame's camera, polygons projected anew with other bits, a textured
+// scene) is set up as before. The cache only saves host time; no modelled cost changes.
 #include <atomic>
 #include <cstdint>
 #include <functional>
