@@ -7,6 +7,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <new>
 #include <set>
 #include <thread>
 #include <tuple>
@@ -173,11 +174,18 @@ void prepare_setup_caches(const std::vector<SimConfig>& points) {
       if (!has_setup_cache(*s)) todo.push_back(s);
     }
   drop_setup_caches([&chosen](const Scene& s) { return chosen.contains(&s); });
-  // Built here, not on worker threads: a thread's temporaries stay in its malloc arena, which the
-  // batch then collapses into huge pages (copying it) before forking.
-  for (const auto& s : todo)
-    add_setup_cache(
-        std::make_unique<const SetupCache>(s, NodeRenderer(*s, s->camera, scene_facts(*s).bounds)));
+  // Built here, one after the other, not on worker threads:
+  // a thread's temporaries stay in its malloc arena, which the batch collapses into huge pages
+  // (copying it) before forking.
+  for (const auto& s : todo) {
+    try {
+      add_setup_cache(std::make_unique<const SetupCache>(
+          s, NodeRenderer(*s, s->camera, scene_facts(*s).bounds)));
+    } catch (const std::bad_alloc&) {
+      // No memory file (memfd_create refused) or no memory for it: this scene's points set up
+      // their triangles themselves, as without the cache.
+    }
+  }
 }
 
 // The cached scenes no point of `points` uses, and the references drawn from them, dropped before
