@@ -174,9 +174,8 @@ void prepare_setup_caches(const std::vector<SimConfig>& points) {
       if (!has_setup_cache(*s)) todo.push_back(s);
     }
   drop_setup_caches([&chosen](const Scene& s) { return chosen.contains(&s); });
-  // Built here, one after the other, not on worker threads:
-  // a thread's temporaries stay in its malloc arena, which the batch collapses into huge pages
-  // (copying it) before forking.
+  // Built here, one after the other, not on worker threads: a thread's temporaries stay in its
+  // malloc arena, which the batch collapses into huge pages (copying it) before forking.
   for (const auto& s : todo) {
     try {
       add_setup_cache(std::make_unique<const SetupCache>(
