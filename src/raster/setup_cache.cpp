@@ -43,10 +43,6 @@ SetupCache::SetupCache(std::shared_ptr<const Scene> held, const NodeRenderer& nr
   tris_ = std::move(tris);
 }
 
-std::size_t SetupCache::bytes() const {
-  return pv_.bytes() + entries_.bytes() + tris_.bytes();
-}
-
 void SetupCache::map_in() const {
   if (mapped_in_.exchange(true)) return;
   pv_.map_in();

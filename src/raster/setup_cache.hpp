@@ -33,7 +33,6 @@ public:
   const Scene& scene() const { return *scene_; }
   const View& view() const { return view_; }
   bool cull_back() const { return cull_back_; }
-  std::size_t bytes() const;
   // Maps the cache's pages in, once a process (a forked simulation about to read it).
   void map_in() const;
 

@@ -38,11 +38,10 @@ std::shared_ptr<const Scene> random_scene(int w, int h) {
   return std::make_shared<const Scene>(std::move(s));
 }
 
-const ProjectedVertex* const* corners(const std::vector<ProjectedVertex>& pv, const Triangle& t,
-                                      const ProjectedVertex* (&p)[3]) {
+void corners(const std::vector<ProjectedVertex>& pv, const Triangle& t,
+             const ProjectedVertex* (&p)[3]) {
   for (int k = 0; k < 3; ++k)
     p[k] = &pv[t.v[k]];
-  return p;
 }
 
 struct SetupCacheTest : ::testing::Test {
