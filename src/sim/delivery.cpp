@@ -1,7 +1,10 @@
 #include "sim/delivery.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include <xbt/config.hpp>
 
@@ -23,6 +26,15 @@ Delivery::Delivery(SimNetwork& net, Fidelity fidelity, std::vector<sg::Host*> ho
       events_driven_(fidelity == Fidelity::Circuit ||
                      (fidelity == Fidelity::Analytic && net.params().half_duplex_limited())),
       duplex_(net.params()) {
+  // A cube's node has a channel a dimension, a ring's one each way (channel_id).
+  const int nodes = net.nodes();
+  cube_ = net.topology() == Topology::Cube;
+  channels_per_node_ =
+      cube_ ? std::uint32_t(std::max(1, int(std::bit_width(unsigned(nodes))) - 1)) : 2;
+  if (events_driven_) {
+    channels_.resize(std::size_t(nodes) * channels_per_node_ + 2);
+    channel_queues_.resize(channels_.size());
+  }
   for (int i = 0; i <= ranks_; ++i)
     waiters_[std::size_t(i)].sleeper.order = i; // ranks, then the network's actor
   if (events_driven_)
@@ -171,19 +183,28 @@ void Delivery::schedule(Event e) {
 
 // A release matters only to a waiter, and can be dated only once the owner holds all its channels.
 void Delivery::schedule_release(std::uint32_t id, Channel& c) {
-  if (c.waiters.empty() || c.free_at == kNotYet || c.release_pending) return;
+  if (c.waiting == 0 || c.free_at == kNotYet || c.release_pending) return;
   c.release_pending = true;
   schedule({c.free_at, event_seq_++, Event::Kind::Release, nullptr, id});
 }
 
 // The first waiter gets the channel (a SimGrid mutex's FIFO hand-over).
-void Delivery::hand_over(Channel& c, std::vector<TransitPtr>& woken) {
-  if (c.waiters.empty()) {
+std::deque<TransitPtr>& Delivery::queue(std::uint32_t id) {
+  auto& q = channel_queues_[id];
+  if (!q) q = std::make_unique<std::deque<TransitPtr>>();
+  return *q;
+}
+
+void Delivery::hand_over(std::uint32_t id, std::vector<TransitPtr>& woken) {
+  Channel& c = channels_[id];
+  if (c.waiting == 0) {
     c.owner = nullptr;
     return;
   }
-  TransitPtr w = std::move(c.waiters.front());
-  c.waiters.pop_front();
+  auto& q = queue(id);
+  TransitPtr w = std::move(q.front());
+  q.pop_front();
+  --c.waiting;
   c.owner = w.get();
   c.free_at = kNotYet;
   ++w->next_channel;
@@ -204,9 +225,10 @@ void Delivery::advance(const TransitPtr& m, double t) {
     while (m->next_channel < h.ids.size()) {
       const std::uint32_t id = h.ids[m->next_channel];
       Channel& c = channels_[id];
-      const bool free = !c.owner || (c.free_at <= t && c.waiters.empty());
+      const bool free = !c.owner || (c.free_at <= t && c.waiting == 0);
       if (!free) {
-        c.waiters.push_back(m);
+        queue(id).push_back(m);
+        ++c.waiting;
         schedule_release(id, c);
         return;
       }
@@ -224,15 +246,9 @@ void Delivery::advance(const TransitPtr& m, double t) {
   }
 }
 
-std::uint32_t Delivery::channel_id(std::pair<int, int> c) {
-  if (channel_slot_.empty()) channel_slot_.assign(std::size_t(ranks_) * std::size_t(ranks_), ~0u);
-  std::uint32_t& slot =
-      channel_slot_[std::size_t(c.first) * std::size_t(ranks_) + std::size_t(c.second)];
-  if (slot == ~0u) {
-    slot = std::uint32_t(channels_.size());
-    channels_.emplace_back();
-  }
-  return slot;
+void Delivery::not_a_link(std::pair<int, int> c) {
+  throw std::logic_error("delivery: channel " + std::to_string(c.first) + " -> " +
+                         std::to_string(c.second) + " is not a link");
 }
 
 // m's current hold ends at `end`: its channels are dated, then m arrives or goes on. Returns true
@@ -273,8 +289,7 @@ void Delivery::process(const Event& e) {
     const Transit& m = *e.m;
     const auto& prev = m.holds[m.stage - 1].ids;
     for (auto it = prev.rbegin(); it != prev.rend(); ++it) {
-      Channel& c = channels_[*it];
-      if (c.owner == &m) hand_over(c, woken);
+      if (channels_[*it].owner == &m) hand_over(*it, woken);
     }
     advance(e.m, e.time);
     break;
@@ -283,7 +298,7 @@ void Delivery::process(const Event& e) {
     Channel& c = channels_[e.channel];
     c.release_pending = false;
     if (c.owner && c.free_at <= e.time)
-      hand_over(c, woken);
+      hand_over(e.channel, woken);
     else
       schedule_release(e.channel, c); // a new owner since: its own release, once dated
     break;

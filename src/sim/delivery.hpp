@@ -11,8 +11,10 @@
 // end of each hop's bytes as the reverse directions' traffic starts and stops (DuplexLinks), under
 // analytic as under circuit. Only the flow fidelity needs SimGrid's bandwidth sharing, so there one
 // actor per message crosses the links.
+#include <bit>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <queue>
 #include <vector>
 
@@ -60,10 +62,13 @@ private:
     const Transit* send = nullptr;
     double deadline = kNotYet;
   };
+  // What every hold reads of a channel, 24 bytes: the channels of a 1024-node cube fit in the
+  // host's cache. Its queue of waiting messages is kept apart (channel_queues_), made on first
+  // contention.
   struct Channel {
     const Transit* owner = nullptr;
-    double free_at = 0; // the owner's release, kNotYet while it is still acquiring
-    std::deque<TransitPtr> waiters;
+    double free_at = 0;        // the owner's release, kNotYet while it is still acquiring
+    std::uint32_t waiting = 0; // messages in its queue
     bool release_pending = false;
   };
   struct Event {
@@ -89,16 +94,40 @@ private:
   // A blocked waiter's wake-up moved to `t`, earlier than its deadline.
   void wake(Waiter& w, double t);
   void arrived(Transit& m);
-  // The channel from c.first to c.second, created on first use (a dense index by (from, to)
-  // instead of a hash map: every hold looks its channels up).
-  std::uint32_t channel_id(std::pair<int, int> c);
+  // The index of the channel from c.first to c.second (a link of the topology, or the host link);
+  // every hold looks its channels up.
+  // Channels are the links between neighbours and the host link (SimNetwork::holds): a node's
+  // are numbered by the dimension they cross on a cube, forward then backward on a ring; the host
+  // link's two directions come after the nodes'.
+  std::uint32_t channel_id(std::pair<int, int> c) const {
+    const auto [a, b] = c;
+    const int host = ranks_ - 1;
+    if (a >= 0 && a < host && b >= 0 && b < host) {
+      if (cube_) {
+        const unsigned x = unsigned(a ^ b);
+        if (x != 0 && (x & (x - 1)) == 0)
+          return std::uint32_t(a) * channels_per_node_ + std::uint32_t(std::countr_zero(x));
+      } else if (b == (a + 1 == host ? 0 : a + 1)) {
+        return std::uint32_t(2 * a);
+      } else if (b == (a == 0 ? host - 1 : a - 1)) {
+        return std::uint32_t(2 * a + 1);
+      }
+    } else if (a == host && b == 0) {
+      return std::uint32_t(channels_.size() - 2);
+    } else if (a == 0 && b == host) {
+      return std::uint32_t(channels_.size() - 1);
+    }
+    not_a_link(c);
+  }
+  [[noreturn]] static void not_a_link(std::pair<int, int> c);
   // Circuit fidelity, and analytic on links whose directions slow each other down.
   void advance(const TransitPtr& m, double t);
   bool end_hold(const TransitPtr& m, double end);
   void schedule_ends(const std::vector<DuplexLinks::Change>& changes);
   void schedule(Event e);
   void schedule_release(std::uint32_t id, Channel& c);
-  void hand_over(Channel& c, std::vector<TransitPtr>& woken);
+  void hand_over(std::uint32_t id, std::vector<TransitPtr>& woken);
+  std::deque<TransitPtr>& queue(std::uint32_t id);
   void process(const Event& e);
   void network_loop();
 
@@ -109,9 +138,11 @@ private:
   unsigned message_stack_kib_;
   int ranks_;
   std::vector<Inbox> inboxes_;
-  std::vector<Waiter> waiters_;             // ranks, then the network actor
-  std::vector<std::uint32_t> channel_slot_; // from * ranks + to -> index into channels_
-  std::vector<Channel> channels_;
+  std::vector<Waiter> waiters_; // ranks, then the network actor
+  bool cube_;
+  std::uint32_t channels_per_node_ = 2;
+  std::vector<Channel> channels_; // the nodes' channels, then the host link's (channel_id)
+  std::vector<std::unique_ptr<std::deque<TransitPtr>>> channel_queues_; // same index
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> events_;
   std::uint64_t event_seq_ = 0;
   std::vector<TransitPtr> woken_; // scratch of process()

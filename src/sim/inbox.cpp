@@ -34,7 +34,7 @@ void Inbox::push(TransitPtr m) {
     throw std::out_of_range("inbox: source rank " + std::to_string(s));
   auto& q = by_source_[std::size_t(s)];
   if (q.empty()) {
-    slot_[std::size_t(s)] = int(pending_sources_.size());
+    q.slot = int(pending_sources_.size());
     pending_sources_.push_back(s);
   }
   q.push(std::move(m));
@@ -51,12 +51,12 @@ TransitPtr Inbox::remove(int src, int index) {
   auto& q = by_source_[std::size_t(src)];
   TransitPtr m = q.remove(std::size_t(index));
   if (q.empty()) { // swap-remove the source from the pending list
-    const int at = slot_[std::size_t(src)];
+    const int at = q.slot;
     const int last = pending_sources_.back();
     pending_sources_[std::size_t(at)] = last;
-    slot_[std::size_t(last)] = at;
+    by_source_[std::size_t(last)].slot = at;
     pending_sources_.pop_back();
-    slot_[std::size_t(src)] = -1;
+    q.slot = -1;
   }
   return m;
 }

@@ -19,7 +19,7 @@ namespace zc {
 
 class Inbox {
 public:
-  explicit Inbox(int sources = 0) : by_source_(std::size_t(sources)), slot_(sources, -1) {}
+  explicit Inbox(int sources = 0) : by_source_(std::size_t(sources)) {}
 
   // In the order of sending (arrival may be kNotYet and be set later).
   void push(TransitPtr m);
@@ -28,15 +28,18 @@ public:
   TransitPtr take(int src, int tag, double now, double& wake);
 
 private:
-  // One source's pending messages in send order: the oldest, then the others (16 bytes when
-  // there are none: an inbox has one a rank).
+  // One source's pending messages in send order: the oldest, then the others, and the source's
+  // place in pending_sources_ (24 bytes when there are none: an inbox has one a rank; a push or a
+  // take reads one cache line of it).
   struct Queue {
     TransitPtr first;
     std::unique_ptr<std::vector<TransitPtr>> rest; // made when a second one is pending
+    int slot = -1;                                 // index in pending_sources_, or -1
     Queue() = default;
     Queue(const Queue& o)
         : first(o.first),
-          rest(o.rest ? std::make_unique<std::vector<TransitPtr>>(*o.rest) : nullptr) {}
+          rest(o.rest ? std::make_unique<std::vector<TransitPtr>>(*o.rest) : nullptr),
+          slot(o.slot) {}
     Queue(Queue&&) noexcept = default;
     bool empty() const { return !first; }
     std::size_t size() const { return first ? 1 + (rest ? rest->size() : 0) : 0; }
@@ -50,7 +53,6 @@ private:
 
   std::vector<Queue> by_source_;     // source -> pending, in send order
   std::vector<int> pending_sources_; // sources whose list is not empty
-  std::vector<int> slot_;            // source -> its index in pending_sources_, or -1
 };
 
 } // namespace zc

@@ -128,6 +128,33 @@ TEST(PointToPoint, SharedChannelSlowsFlowAndCircuitNotAnalytic) {
   }
 }
 
+TEST(PointToPoint, SharedRingChannelSlowsCircuitBothWaysAndAcrossTheWrap) {
+  // 8-node ring: 7 -> 1 goes 7-0-1 and 0 -> 1 needs (0,1); 1 -> 7 goes 1-0-7 and 0 -> 7 needs
+  // (0,7), the backward channel across the wrap. Each pair shares one channel; the other pairs
+  // share none (a link's two directions are two channels).
+  const double m = 65536;
+  auto run = [&](int a, int b, int c2, int d) {
+    auto r = run_custom(sim_config("ipsc2", 8, Topology::Ring, Fidelity::Circuit),
+                        [=](NodeContext& ctx) {
+                          Comm& c = ctx.comm();
+                          if (c.rank() == a) c.send(b, 0, Bytes(std::size_t(m)));
+                          if (c.rank() == c2) c.send(d, 1, Bytes(std::size_t(m)));
+                          if (c.rank() == b) c.recv(a, 0);
+                          if (c.rank() == d) c.recv(c2, 1);
+                        });
+    EXPECT_EQ(r["status"], "ok") << r.dump();
+    return r["virtual_time_s"].get<double>();
+  };
+  const double two_hops = machine_spec("ipsc2").net.message_time(m, 2);
+  const double three_hops = machine_spec("ipsc2").net.message_time(m, 3);
+  EXPECT_GT(run(7, 1, 0, 1), two_hops * 1.5);
+  EXPECT_GT(run(1, 7, 0, 7), two_hops * 1.5);
+  expect_rel(run(6, 1, 2, 5), three_hops, 1e-12, "no channel shared");
+  const double one_hop = machine_spec("ipsc2").net.message_time(m, 1);
+  expect_rel(run(0, 1, 1, 0), one_hop, 1e-12, "a link both ways");
+  expect_rel(run(7, 0, 0, 7), one_hop, 1e-12, "the wrap both ways");
+}
+
 TEST(PointToPoint, RanksDueAtOneVirtualTimeRunInRankOrder) {
   // 4-node cube, circuit: 0 -> 3 (channels 0-1, 1-3) and 1 -> 3 (channel 1-3) are sent at the same
   // virtual time, after computing. Rank 1's wake-up is set first (at time 0, rank 0's at the end
