@@ -142,12 +142,9 @@ void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, 
       ph[n] = t;
     // Operations per phase, zero counts left out (the calibration's linear model).
     nlohmann::json pw = nlohmann::json::object();
-    for (const auto& [n, w] : rec.phase_work) {
-      nlohmann::json cj = w, nz = nlohmann::json::object();
-      for (auto& [k, v] : cj.items())
-        if (v.get<std::uint64_t>() != 0) nz[k] = v;
-      if (!nz.empty()) pw[n.empty() ? "(no phase)" : n] = nz;
-    }
+    for (const auto& [n, w] : rec.phase_work)
+      if (nlohmann::json nz = nonzero_json(w); !nz.empty())
+        pw[n.empty() ? "(no phase)" : n] = std::move(nz);
     j["per_node"].push_back({{"rank", rec.rank},
                              {"busy_s", s.busy_s},
                              {"comm_s", s.comm_s},

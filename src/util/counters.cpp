@@ -26,6 +26,15 @@ void to_json(nlohmann::json& j, const Counters& c) {
 #undef ZC_JSON
 }
 
+nlohmann::json nonzero_json(const Counters& c) {
+  nlohmann::json j = nlohmann::json::object();
+#define ZC_JSON(f)                                                                                 \
+  if (c.f != 0) j[#f] = c.f;
+  ZC_COUNTER_FIELDS(ZC_JSON)
+#undef ZC_JSON
+  return j;
+}
+
 void from_json(const nlohmann::json& j, Counters& c) {
   c = Counters{};
 #define ZC_FROM_JSON(f)                                                                            \

@@ -67,6 +67,8 @@ constexpr std::uint64_t sort_steps(std::uint64_t n) {
 
 void to_json(nlohmann::json& j, const Counters& c);
 void from_json(const nlohmann::json& j, Counters& c); // absent fields are 0
+// The fields that are not zero (what a report keeps of a phase's operations).
+nlohmann::json nonzero_json(const Counters& c);
 
 // Every counter field, for code that must treat them uniformly (cost tables, reports):
 // ZC_COUNTER_FIELDS(X) expands X(name) once per field, in declaration order.
