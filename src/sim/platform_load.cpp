@@ -387,23 +387,30 @@ LinkFigures common_figures(const std::vector<LinkFigures>& links, const std::str
   return links[best];
 }
 
+// A channel's bandwidth or latency, checked; the link is named only in the error (a 1024-node
+// cube has 20,000 links).
+double link_figure(double v, bool bandwidth, const std::string& name, const std::string& where) {
+  if (std::isfinite(v) && (bandwidth ? v >= 1 : v >= 0 && v <= 3600)) return v;
+  const std::string what = "link '" + name + "' " + (bandwidth ? "bandwidth" : "latency");
+  return bandwidth ? clock_safe_bandwidth(checked(v, where, what, 0, true), where, what)
+                   : clock_safe_delay(checked(v, where, what), where, what);
+}
+
 void read_links(const sg::Engine& e, const std::string& where, NetworkParams& n) {
   std::vector<LinkFigures> channels, host, duplex;
   for (const sg::Link* l : e.get_all_links()) {
-    const std::string name = l->get_name();
+    const std::string& name = l->get_name();
     if (name == "__loopback__") continue;
-    const std::string what = "link '" + name + "' ";
     if (is_duplex_link(name)) { // the two-way total: no latency of its own
+      const std::string what = "link '" + name + "' ";
       const double bw = checked(l->get_bandwidth(), where, what + "bandwidth", 0, true);
       if (l->get_latency() != 0)
         throw InputError(where, 0, what + "latency: a duplex link adds no latency (0s)");
       duplex.push_back({name, bw, 0});
       continue;
     }
-    const double bw = clock_safe_bandwidth(
-        checked(l->get_bandwidth(), where, what + "bandwidth", 0, true), where, what + "bandwidth");
-    const double lat = clock_safe_delay(checked(l->get_latency(), where, what + "latency"), where,
-                                        what + "latency");
+    const double bw = link_figure(l->get_bandwidth(), true, name, where);
+    const double lat = link_figure(l->get_latency(), false, name, where);
     (name == kHostUpLink || name == kHostDownLink ? host : channels).push_back({name, bw, lat});
   }
   if (host.empty())
