@@ -32,17 +32,20 @@ void to_json(nlohmann::json& j, const Traffic& t);
 void from_json(const nlohmann::json& j, Traffic& t);
 
 // Counters of one node's run, whatever the backend.
-struct NodeStats {
-  double busy_s = 0, comm_s = 0, finish_s = 0;
+// What every send, receive and charge updates comes first, in one host cache line: a simulation
+// of many nodes switches between them at every message.
+struct alignas(64) NodeStats {
+  double busy_s = 0, comm_s = 0;
   std::uint64_t bytes_sent = 0, messages = 0; // bytes_sent: charged bytes
   std::uint64_t payload_bytes_sent = 0;
-  std::string phase; // the innermost open phase ("" outside every phase); set by set_phase
   // Bumped by every set_phase: a backend that keeps the current phase's phase_traffic entry
   // between sends checks this counter instead of comparing the name on every send.
   std::uint64_t phase_changes = 0;
+  std::shared_ptr<EventLog> log; // the node's timeline; null unless one was asked for
+  double finish_s = 0;
+  std::string phase; // the innermost open phase ("" outside every phase); set by set_phase
   std::map<std::string, Traffic> phase_traffic; // what was sent in each phase
   double memory = 0, peak_memory = 0;
-  std::shared_ptr<EventLog> log; // the node's timeline; null unless one was asked for
   bool timed = false;            // the node started the paper's timed region (start_timed_region)
   double timed_start_s = 0;      // when
   bool timed_ended = false;      // the node ended it (end_timed_region) before finishing
