@@ -26,6 +26,7 @@ Delivery::Delivery(SimNetwork& net, Fidelity fidelity, std::vector<sg::Host*> ho
       events_driven_(fidelity == Fidelity::Circuit ||
                      (fidelity == Fidelity::Analytic && net.params().half_duplex_limited())),
       duplex_(net.params()) {
+  if (fidelity == Fidelity::Flow) idle_couriers_.resize(std::size_t(ranks_));
   // A cube's node has a channel a dimension, a ring's one each way (channel_id).
   const int nodes = net.nodes();
   cube_ = net.topology() == Topology::Cube;
@@ -105,17 +106,49 @@ TransitPtr Delivery::post(int src, int dst, int tag, Message&& msg, Blocks&& blo
   } else {
     m->holds.clear();
     inboxes_[dst].push(m);
-    // An actor a message, on a small stack: its code is a few calls deep, and SimGrid's default
-    // (8 MiB, mapped and unmapped apart) cost the host a mmap, two mprotects, a munmap and fresh
-    // pages each. A small stack comes from the heap, but SimGrid clears it (calloc): the flow runs
-    // of `zcube reproduce` start 75,000 of these actors, 4.9 GB cleared with 64 KiB stacks.
-    sg::Actor::init("msg", hosts_[src])->set_stacksize(message_stack_kib_)->start([this, m, bytes] {
-      net_.transfer(m->src, m->dst, bytes);
-      m->arrival = wakeups_.now();
-      arrived(*m);
-    });
+    carry(m, bytes);
   }
   return m;
+}
+
+// Under the flow fidelity a message crosses SimGrid's links in an actor of its own (a courier),
+// on a small stack: its code is a few calls deep, and SimGrid's default (8 MiB, mapped and
+// unmapped apart) cost the host a mmap, two mprotects, a munmap and fresh pages each. A courier
+// that has delivered waits for the next message of its node instead of ending: SimGrid clears a
+// new actor's stack (calloc) and unwinds an ending one with an exception, the host cost of most
+// messages. It starts at once as a new actor would (SimGrid runs it at this virtual time, after
+// the actors already due), on the sender's host.
+void Delivery::carry(const TransitPtr& m, double bytes) {
+  auto& idle = idle_couriers_[std::size_t(m->src)];
+  if (!idle.empty()) {
+    Courier* c = idle.back();
+    idle.pop_back();
+    c->job = m;
+    c->bytes = bytes;
+    c->actor->resume();
+    return;
+  }
+  couriers_.push_back(std::make_unique<Courier>());
+  Courier* c = couriers_.back().get();
+  c->job = m;
+  c->bytes = bytes;
+  c->actor = sg::Actor::init("msg", hosts_[std::size_t(m->src)])
+                 ->set_stacksize(message_stack_kib_)
+                 ->start([this, c] { courier_loop(*c); });
+  c->actor->daemonize(); // an idle courier does not keep the simulation going
+}
+
+void Delivery::courier_loop(Courier& c) {
+  for (;;) {
+    TransitPtr m = std::move(c.job);
+    net_.transfer(m->src, m->dst, c.bytes);
+    m->arrival = wakeups_.now();
+    arrived(*m);
+    idle_couriers_[std::size_t(m->src)].push_back(&c);
+    m.reset();
+    while (!c.job)
+      sg::this_actor::suspend();
+  }
 }
 
 // A known arrival that nothing can bring forward is waited for without being marked blocked

@@ -130,6 +130,14 @@ private:
   std::deque<TransitPtr>& queue(std::uint32_t id);
   void process(const Event& e);
   void network_loop();
+  // Flow fidelity: the actor that carries a message across SimGrid's links (carry()).
+  struct Courier {
+    simgrid::s4u::ActorPtr actor;
+    TransitPtr job; // the message to carry, null while idle
+    double bytes = 0;
+  };
+  void carry(const TransitPtr& m, double bytes);
+  void courier_loop(Courier& c);
 
   SimNetwork& net_;
   Fidelity fidelity_;
@@ -146,6 +154,8 @@ private:
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> events_;
   std::uint64_t event_seq_ = 0;
   std::vector<TransitPtr> woken_; // scratch of process()
+  std::vector<std::unique_ptr<Courier>> couriers_;
+  std::vector<std::vector<Courier*>> idle_couriers_; // by sending rank
   bool events_driven_; // circuit, or any fidelity zcube times on half-duplex-limited links
   DuplexLinks duplex_;
 };
