@@ -9,8 +9,8 @@
 // (platforms/README.md); a single daemon actor wakes up at the releases that someone waits for. On
 // links whose directions slow each other down (the Volvox's T800 links), the same actor dates the
 // end of each hop's bytes as the reverse directions' traffic starts and stops (DuplexLinks), under
-// analytic as under circuit. Only the flow fidelity needs SimGrid's bandwidth sharing, so there one
-// actor per message crosses the links.
+// analytic as under circuit. Only the flow fidelity needs SimGrid's bandwidth sharing, so there a
+// message crosses the links in an actor (a courier, reused for its node's next message).
 #include <bit>
 #include <cstdint>
 #include <deque>
