@@ -46,10 +46,10 @@ struct alignas(64) NodeStats {
   std::string phase; // the innermost open phase ("" outside every phase); set by set_phase
   std::map<std::string, Traffic> phase_traffic; // what was sent in each phase
   double memory = 0, peak_memory = 0;
-  bool timed = false;            // the node started the paper's timed region (start_timed_region)
-  double timed_start_s = 0;      // when
-  bool timed_ended = false;      // the node ended it (end_timed_region) before finishing
-  double timed_end_s = 0;        // when
+  bool timed = false;       // the node started the paper's timed region (start_timed_region)
+  double timed_start_s = 0; // when
+  bool timed_ended = false; // the node ended it (end_timed_region) before finishing
+  double timed_end_s = 0;   // when
   // The end of the node's timed region: end_timed_region's time, else the node's finish.
   double timed_until_s() const { return timed_ended ? timed_end_s : finish_s; }
   void set_phase(const std::string& name) {
