@@ -5,7 +5,68 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "raster/avx2_lanes.hpp"
+
 namespace zc {
+
+namespace {
+// Locations [0, n) of a message's run z-buffered into the planes at `depth`, `ids` and `rgb` (the
+// rows ready): at each, in_front then the write, as test_and_write does. Locations are distinct,
+// so eight can be compared at once and the winners written with the same results.
+void merge_run_scalar(std::size_t n, const std::uint8_t* zs, const std::uint8_t* idm,
+                      const std::uint8_t* rgbm, float* depth, std::uint32_t* ids,
+                      std::uint8_t* rgb) {
+  for (std::size_t k = 0; k < n; ++k) {
+    float z;
+    std::uint32_t id;
+    std::memcpy(&z, zs + 4 * k, 4);
+    std::memcpy(&id, idm + 4 * k, 4);
+    if (!in_front(z, id, depth[k], ids[k])) continue;
+    depth[k] = z;
+    ids[k] = id;
+    std::memcpy(rgb + 3 * k, rgbm + 3 * k, 3);
+  }
+}
+
+#ifdef ZC_HAVE_AVX2_LANES
+// in_front over eight lanes: z < zs (ordered: false for NaN), or z == zs and id < ids (unsigned,
+// compared signed after flipping the sign bits).
+__attribute__((target("avx2"))) void merge_run_avx2(std::size_t n, const std::uint8_t* zs,
+                                                    const std::uint8_t* idm,
+                                                    const std::uint8_t* rgbm, float* depth,
+                                                    std::uint32_t* ids, std::uint8_t* rgb) {
+  const __m256i sign = _mm256_set1_epi32(int(0x80000000u));
+  std::size_t k = 0;
+  for (; k + 8 <= n; k += 8) {
+    const __m256 z = _mm256_loadu_ps(reinterpret_cast<const float*>(zs + 4 * k));
+    const __m256 zd = _mm256_loadu_ps(depth + k);
+    const __m256i id = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(idm + 4 * k));
+    const __m256i idd = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(ids + k));
+    const __m256 id_lt = _mm256_castsi256_ps(
+        _mm256_cmpgt_epi32(_mm256_xor_si256(idd, sign), _mm256_xor_si256(id, sign)));
+    const __m256 wins = _mm256_or_ps(_mm256_cmp_ps(z, zd, _CMP_LT_OQ),
+                                     _mm256_and_ps(_mm256_cmp_ps(z, zd, _CMP_EQ_OQ), id_lt));
+    unsigned mask = unsigned(_mm256_movemask_ps(wins));
+    if (mask == 0) continue;
+    _mm256_maskstore_ps(depth + k, _mm256_castps_si256(wins), z);
+    _mm256_maskstore_epi32(reinterpret_cast<int*>(ids + k), _mm256_castps_si256(wins), id);
+    for (; mask != 0; mask &= mask - 1) {
+      const std::size_t j = k + std::size_t(__builtin_ctz(mask));
+      std::memcpy(rgb + 3 * j, rgbm + 3 * j, 3);
+    }
+  }
+  merge_run_scalar(n - k, zs + 4 * k, idm + 4 * k, rgbm + 3 * k, depth + k, ids + k, rgb + 3 * k);
+}
+#endif
+
+void merge_run(std::size_t n, const std::uint8_t* zs, const std::uint8_t* idm,
+               const std::uint8_t* rgbm, float* depth, std::uint32_t* ids, std::uint8_t* rgb) {
+#ifdef ZC_HAVE_AVX2_LANES
+  if (avx2::available()) return merge_run_avx2(n, zs, idm, rgbm, depth, ids, rgb);
+#endif
+  merge_run_scalar(n, zs, idm, rgbm, depth, ids, rgb);
+}
+} // namespace
 
 static std::uint8_t to_byte(float c) {
   const float v = c <= 0.f ? 0.f : (c >= 1.f ? 1.f : c);
@@ -166,13 +227,10 @@ std::size_t Framebuffer::merge_locations(const std::uint8_t* msg, std::size_t si
       continue;
     }
     ready_local(int(r));
-    for (; k < to; ++k) {
-      float z;
-      std::uint32_t id;
-      std::memcpy(&z, zs + 4 * k, 4);
-      std::memcpy(&id, ids + 4 * k, 4);
-      test_and_write(first + k, z, id, msg + 3 * k);
-    }
+    const std::size_t at = first + k;
+    merge_run(to - k, zs + 4 * k, ids + 4 * k, msg + 3 * k, depth_.data() + at, ids_.data() + at,
+              rgb_.data() + 3 * at);
+    k = to;
   }
   return n;
 }
