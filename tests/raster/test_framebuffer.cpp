@@ -68,10 +68,15 @@ TEST(Framebuffer, UntouchedRowsReadAsBackground) {
 TEST(Framebuffer, MergeLocationsEqualsTestAndWriteAtEveryLocation) {
   const int W = 37, H = 5;
   std::mt19937 rng(7);
-  const float specials[] = {0.f, -0.f, 0.5f, 0.25f, std::numeric_limits<float>::infinity(),
-                            std::numeric_limits<float>::quiet_NaN(), 1.f};
-  const std::uint32_t special_ids[] = {0u, 1u, 7u, 0x7fffffffu, 0x80000000u, 0xfffffffeu,
-                                       kNoTriangle};
+  const float specials[] = {0.f,
+                            -0.f,
+                            0.5f,
+                            0.25f,
+                            std::numeric_limits<float>::infinity(),
+                            std::numeric_limits<float>::quiet_NaN(),
+                            1.f};
+  const std::uint32_t special_ids[] = {0u,          1u,          7u,         0x7fffffffu,
+                                       0x80000000u, 0xfffffffeu, kNoTriangle};
   const auto fill = [&](Framebuffer& fb) {
     for (int y = 0; y < H; ++y) {
       fb.ready_row(y);
