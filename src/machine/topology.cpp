@@ -61,11 +61,6 @@ int hops(Topology t, int nodes, int src, int dst) {
   return std::min(fwd, nodes - fwd);
 }
 
-int neighbour(Topology t, int nodes, int node, int channel) {
-  if (t == Topology::Cube) return node ^ (1 << channel);
-  return channel == 0 ? (node + 1) % nodes : (node + nodes - 1) % nodes;
-}
-
 int channel_count(Topology t, int nodes) {
   if (t == Topology::Cube) return log2_exact(nodes);
   return nodes == 1 ? 0 : (nodes == 2 ? 1 : 2);

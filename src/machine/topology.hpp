@@ -23,8 +23,12 @@ std::vector<std::pair<int, int>> route(Topology t, int nodes, int src, int dst);
 void route_into(Topology t, int nodes, int src, int dst, std::vector<std::pair<int, int>>& out);
 int hops(Topology t, int nodes, int src, int dst);
 
-// Neighbours of a node: cube channel k -> i ^ 2^k; ring 0 -> i+1, 1 -> i-1.
-int neighbour(Topology t, int nodes, int node, int channel);
+// Neighbours of a node: cube channel k -> i ^ 2^k; ring 0 -> i+1, 1 -> i-1. (Inline: the
+// simulator numbers every hold's channels with it.)
+inline int neighbour(Topology t, int nodes, int node, int channel) {
+  if (t == Topology::Cube) return node ^ (1 << channel);
+  return channel == 0 ? (node + 1) % nodes : (node + nodes - 1) % nodes;
+}
 int channel_count(Topology t, int nodes);
 int log2_exact(int p); // for a power of two
 

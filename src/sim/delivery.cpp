@@ -1,7 +1,6 @@
 #include "sim/delivery.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -27,13 +26,10 @@ Delivery::Delivery(SimNetwork& net, Fidelity fidelity, std::vector<sg::Host*> ho
                      (fidelity == Fidelity::Analytic && net.params().half_duplex_limited())),
       duplex_(net.params()) {
   if (fidelity == Fidelity::Flow) idle_couriers_.resize(std::size_t(ranks_));
-  // A cube's node has a channel a dimension, a ring's one each way (channel_id).
-  const int nodes = net.nodes();
-  cube_ = net.topology() == Topology::Cube;
-  channels_per_node_ =
-      cube_ ? std::uint32_t(std::max(1, int(std::bit_width(unsigned(nodes))) - 1)) : 2;
+  topology_ = net.topology();
+  channels_per_node_ = std::uint32_t(channel_count(topology_, net.nodes()));
   if (events_driven_) {
-    channels_.resize(std::size_t(nodes) * channels_per_node_ + 2);
+    channels_.resize(std::size_t(net.nodes()) * channels_per_node_ + 2);
     channel_queues_.resize(channels_.size());
   }
   for (int i = 0; i <= ranks_; ++i)

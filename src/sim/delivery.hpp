@@ -20,6 +20,7 @@
 
 #include <simgrid/s4u.hpp>
 
+#include "machine/topology.hpp"
 #include "sim/duplex_links.hpp"
 #include "sim/inbox.hpp"
 #include "sim/sim_network.hpp"
@@ -94,28 +95,23 @@ private:
   // A blocked waiter's wake-up moved to `t`, earlier than its deadline.
   void wake(Waiter& w, double t);
   void arrived(Transit& m);
-  // The index of the channel from c.first to c.second (a link of the topology, or the host link);
-  // every hold looks its channels up.
-  // Channels are the links between neighbours and the host link (SimNetwork::holds): a node's
-  // are numbered by the dimension they cross on a cube, forward then backward on a ring; the host
-  // link's two directions come after the nodes'.
+  // The index of the channel from c.first to c.second; every hold looks its channels up. The
+  // channels are the topology's links (node a's channel k leads to neighbour(a, k)), then the host
+  // link's two directions.
   std::uint32_t channel_id(std::pair<int, int> c) const {
     const auto [a, b] = c;
-    const int host = ranks_ - 1;
-    if (a >= 0 && a < host && b >= 0 && b < host) {
-      if (cube_) {
-        const unsigned x = unsigned(a ^ b);
-        if (x != 0 && (x & (x - 1)) == 0)
-          return std::uint32_t(a) * channels_per_node_ + std::uint32_t(std::countr_zero(x));
-      } else if (b == (a + 1 == host ? 0 : a + 1)) {
-        return std::uint32_t(2 * a);
-      } else if (b == (a == 0 ? host - 1 : a - 1)) {
-        return std::uint32_t(2 * a + 1);
-      }
-    } else if (a == host && b == 0) {
-      return std::uint32_t(channels_.size() - 2);
-    } else if (a == 0 && b == host) {
-      return std::uint32_t(channels_.size() - 1);
+    const int nodes = ranks_ - 1; // the host computer is rank `nodes`
+    const auto node_channels = std::uint32_t(channels_.size() - 2);
+    if (a >= 0 && a < nodes && b >= 0 && b < nodes && a != b) {
+      const int k = topology_ == Topology::Cube              ? std::countr_zero(unsigned(a ^ b))
+                    : b == neighbour(topology_, nodes, a, 0) ? 0
+                                                             : 1;
+      if (std::uint32_t(k) < channels_per_node_ && neighbour(topology_, nodes, a, k) == b)
+        return std::uint32_t(a) * channels_per_node_ + std::uint32_t(k);
+    } else if (a == nodes && b == 0) {
+      return node_channels;
+    } else if (a == 0 && b == nodes) {
+      return node_channels + 1;
     }
     not_a_link(c);
   }
@@ -147,9 +143,9 @@ private:
   int ranks_;
   std::vector<Inbox> inboxes_;
   std::vector<Waiter> waiters_; // ranks, then the network actor
-  bool cube_;
-  std::uint32_t channels_per_node_ = 2;
-  std::vector<Channel> channels_; // the nodes' channels, then the host link's (channel_id)
+  Topology topology_;
+  std::uint32_t channels_per_node_ = 0; // channel_count(topology_, nodes)
+  std::vector<Channel> channels_;       // the nodes' channels, then the host link's (channel_id)
   std::vector<std::unique_ptr<std::deque<TransitPtr>>> channel_queues_; // same index
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> events_;
   std::uint64_t event_seq_ = 0;
