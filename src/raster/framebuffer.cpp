@@ -10,31 +10,15 @@
 namespace zc {
 
 namespace {
-// Locations [0, n) of a message's run z-buffered into the planes at `depth`, `ids` and `rgb` (the
-// rows ready): at each, in_front then the write, as test_and_write does. Locations are distinct,
-// so eight can be compared at once and the winners written with the same results.
-void merge_run_scalar(std::size_t n, const std::uint8_t* zs, const std::uint8_t* idm,
-                      const std::uint8_t* rgbm, float* depth, std::uint32_t* ids,
-                      std::uint8_t* rgb) {
-  for (std::size_t k = 0; k < n; ++k) {
-    float z;
-    std::uint32_t id;
-    std::memcpy(&z, zs + 4 * k, 4);
-    std::memcpy(&id, idm + 4 * k, 4);
-    if (!in_front(z, id, depth[k], ids[k])) continue;
-    depth[k] = z;
-    ids[k] = id;
-    std::memcpy(rgb + 3 * k, rgbm + 3 * k, 3);
-  }
-}
-
 #ifdef ZC_HAVE_AVX2_LANES
-// in_front over eight lanes: z < zs (ordered: false for NaN), or z == zs and id < ids (unsigned,
-// compared signed after flipping the sign bits).
-__attribute__((target("avx2"))) void merge_run_avx2(std::size_t n, const std::uint8_t* zs,
-                                                    const std::uint8_t* idm,
-                                                    const std::uint8_t* rgbm, float* depth,
-                                                    std::uint32_t* ids, std::uint8_t* rgb) {
+// The first locations of a message's run (a multiple of eight, all but the last n % 8) z-buffered
+// into the planes at `depth`, `ids` and `rgb`, whose rows are ready: eight at once, each as
+// test_and_write would (the locations are distinct, so the lanes are independent). in_front over
+// eight lanes: z < zs (ordered: false for NaN), or z == zs and id < ids (unsigned, compared signed
+// after flipping the sign bits). Returns how many it merged.
+__attribute__((target("avx2"))) std::size_t
+merge_eights_avx2(std::size_t n, const std::uint8_t* zs, const std::uint8_t* idm,
+                  const std::uint8_t* rgbm, float* depth, std::uint32_t* ids, std::uint8_t* rgb) {
   const __m256i sign = _mm256_set1_epi32(int(0x80000000u));
   std::size_t k = 0;
   for (; k + 8 <= n; k += 8) {
@@ -55,17 +39,9 @@ __attribute__((target("avx2"))) void merge_run_avx2(std::size_t n, const std::ui
       std::memcpy(rgb + 3 * j, rgbm + 3 * j, 3);
     }
   }
-  merge_run_scalar(n - k, zs + 4 * k, idm + 4 * k, rgbm + 3 * k, depth + k, ids + k, rgb + 3 * k);
+  return k;
 }
 #endif
-
-void merge_run(std::size_t n, const std::uint8_t* zs, const std::uint8_t* idm,
-               const std::uint8_t* rgbm, float* depth, std::uint32_t* ids, std::uint8_t* rgb) {
-#ifdef ZC_HAVE_AVX2_LANES
-  if (avx2::available()) return merge_run_avx2(n, zs, idm, rgbm, depth, ids, rgb);
-#endif
-  merge_run_scalar(n, zs, idm, rgbm, depth, ids, rgb);
-}
 } // namespace
 
 static std::uint8_t to_byte(float c) {
@@ -227,10 +203,20 @@ std::size_t Framebuffer::merge_locations(const std::uint8_t* msg, std::size_t si
       continue;
     }
     ready_local(int(r));
-    const std::size_t at = first + k;
-    merge_run(to - k, zs + 4 * k, ids + 4 * k, msg + 3 * k, depth_.data() + at, ids_.data() + at,
-              rgb_.data() + 3 * at);
-    k = to;
+#ifdef ZC_HAVE_AVX2_LANES
+    if (avx2::available()) {
+      const std::size_t at = first + k;
+      k += merge_eights_avx2(to - k, zs + 4 * k, ids + 4 * k, msg + 3 * k, depth_.data() + at,
+                             ids_.data() + at, rgb_.data() + 3 * at);
+    }
+#endif
+    for (; k < to; ++k) {
+      float z;
+      std::uint32_t id;
+      std::memcpy(&z, zs + 4 * k, 4);
+      std::memcpy(&id, ids + 4 * k, 4);
+      test_and_write(first + k, z, id, msg + 3 * k);
+    }
   }
   return n;
 }
