@@ -236,8 +236,11 @@ double checked(double v, const std::string& where, const std::string& what, doub
 
 // Beyond these figures the simulated clock (a double) passes 2^52 ns, where it no longer resolves
 // a nanosecond and compute times are rounded: the bounds of the what-if flags (run/run_flags.cpp).
+constexpr double kMaxDelay_s = 3600;
+constexpr double kMinBandwidth_Bps = 1;
+
 double clock_safe_delay(double v, const std::string& where, const std::string& what) {
-  if (v > 3600)
+  if (v > kMaxDelay_s)
     throw InputError(where, 0,
                      what + " = " + format_double(v) +
                          " s: above 1 h; slower costs push the simulated clock past 2^52 ns, "
@@ -246,7 +249,7 @@ double clock_safe_delay(double v, const std::string& where, const std::string& w
 }
 
 double clock_safe_bandwidth(double v, const std::string& where, const std::string& what) {
-  if (v < 1)
+  if (v < kMinBandwidth_Bps)
     throw InputError(where, 0,
                      what + " = " + format_double(v) +
                          " Bps: below 1 Bps; slower links push the simulated clock past 2^52 ns, "
@@ -387,10 +390,11 @@ LinkFigures common_figures(const std::vector<LinkFigures>& links, const std::str
   return links[best];
 }
 
-// A channel's bandwidth or latency, checked; the link is named only in the error (a 1024-node
-// cube has 20,000 links).
+// A channel's bandwidth or latency, checked as checked() and clock_safe_*() check it; the link is
+// named only in the error (a 1024-node cube has 20,000 links).
 double link_figure(double v, bool bandwidth, const std::string& name, const std::string& where) {
-  if (std::isfinite(v) && (bandwidth ? v >= 1 : v >= 0 && v <= 3600)) return v;
+  if (std::isfinite(v) && (bandwidth ? v >= kMinBandwidth_Bps : v >= 0 && v <= kMaxDelay_s))
+    return v;
   const std::string what = "link '" + name + "' " + (bandwidth ? "bandwidth" : "latency");
   return bandwidth ? clock_safe_bandwidth(checked(v, where, what, 0, true), where, what)
                    : clock_safe_delay(checked(v, where, what), where, what);
