@@ -44,13 +44,14 @@ void corners(const std::vector<ProjectedVertex>& pv, const Triangle& t,
     p[k] = &pv[t.v[k]];
 }
 
+} // namespace
+
+// Outside the anonymous namespace: the test classes TEST_F derives from it have external linkage.
 struct SetupCacheTest : ::testing::Test {
   void TearDown() override {
     drop_setup_caches([](const Scene&) { return false; });
   }
 };
-
-} // namespace
 
 TEST_F(SetupCacheTest, GivesWhatSetUpGivesBitForBit) {
   for (const bool cull : {false, true}) {

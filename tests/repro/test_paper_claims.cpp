@@ -8,12 +8,13 @@
 
 #include "repro/paper_figures.hpp"
 #include "sim/simulation.hpp"
+#include "source_root.hpp"
 
 using namespace zc;
 
 namespace {
 
-const std::string kRoot = ZCUBE_SOURCE_DIR;
+using test::kRoot;
 
 nlohmann::json run(const std::string& machine, int nodes, const std::string& algorithm,
                    const std::string& scene, int size, Topology topo = Topology::Cube) {

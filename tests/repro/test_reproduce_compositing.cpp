@@ -11,11 +11,12 @@
 #include "repro/reproduce.hpp"
 #include "repro/simulate.hpp"
 #include "repro/table.hpp"
+#include "source_root.hpp"
 
 using namespace zc;
 
 namespace {
-const std::string kRoot = ZCUBE_SOURCE_DIR;
+using test::kRoot;
 }
 
 TEST(ReproduceCompositing, CommittedTablesAreCurrentAtEightNodes) {

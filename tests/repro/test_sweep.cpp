@@ -16,6 +16,7 @@
 #include "repro/reproduce.hpp"
 #include "repro/simulate.hpp"
 #include "repro/sweep.hpp"
+#include "source_root.hpp"
 #include "util/error.hpp"
 #include "util/nnls.hpp"
 
@@ -23,7 +24,7 @@ using namespace zc;
 
 namespace {
 
-const std::string kRoot = ZCUBE_SOURCE_DIR;
+using test::kRoot;
 
 using test::read_csv;
 

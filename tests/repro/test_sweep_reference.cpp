@@ -11,12 +11,13 @@
 #include "csv.hpp"
 #include "repro/simulate.hpp"
 #include "repro/sweep.hpp"
+#include "source_root.hpp"
 
 using namespace zc;
 
 namespace {
 
-const std::string kRoot = ZCUBE_SOURCE_DIR;
+using test::kRoot;
 
 using test::csv_cell;
 
