@@ -1,5 +1,4 @@
 // zcube probe: measure the cluster under mpirun and write its platform file (mpi/probe.hpp).
-#include <fstream>
 #include <iomanip>
 #include <iostream>
 
@@ -8,12 +7,17 @@
 #include "cli/paths.hpp"
 #include "repro/sweep.hpp"
 #include "util/error.hpp"
+#include "util/output_file.hpp"
 #ifdef ZCUBE_HAVE_MPI
 #include "mpi/mpi_session.hpp"
 #include "mpi/probe.hpp"
 #endif
 
 namespace zc::cli {
+
+// The most a CPU loop of the probe is timed for (--seconds): each of its ~40 loops is timed for
+// that long, three rounds, alone and at once, so 60 s already makes a probe of hours.
+constexpr double kMaxProbeSeconds = 60;
 
 static int cmd_probe(std::vector<std::string> args) {
   CLI::App app{"Measure the MPI processes' network and CPU and write a platform of them "
@@ -29,7 +33,6 @@ static int cmd_probe(std::vector<std::string> args) {
   app.add_option("--seconds", seconds, "least time per CPU measurement")->capture_default_str();
   if (int rc = parse(app, args); rc >= 0) return rc;
 #ifdef ZCUBE_HAVE_MPI
-  MpiSession mpi;
   ProbeOptions o;
   o.root = source_root();
   o.out = out;
@@ -42,9 +45,19 @@ static int cmd_probe(std::vector<std::string> args) {
         throw UsageError("--nodes '" + v + "': expected a node count");
       }
     }
+  // Checked before the measurements (tens of seconds): the least time a loop is timed, and every
+  // file the probe will write.
+  if (!(seconds > 0 && seconds <= kMaxProbeSeconds))
+    throw UsageError("--seconds: expected a time above 0 and at most " +
+                     std::to_string(int(kMaxProbeSeconds)) + " s");
+  std::vector<std::pair<std::string, std::string>> outputs{{"--json", json}};
+  for (const auto& f : probe_outputs(o, 0))
+    outputs.push_back({"--out", f});
+  check_output_paths(outputs);
+  MpiSession mpi;
   const auto m = probe_cluster(o);
   if (mpi.rank() != 0) return 0;
-  if (!json.empty()) std::ofstream(json) << m.dump(1) << "\n";
+  if (!json.empty()) write_text_file(json, m.dump(1) + "\n");
   const auto& n = m["network"];
   std::cout << std::setprecision(4) << "network: start-up "
             << n["startup_short_s"].get<double>() * 1e6 << " us (short), "

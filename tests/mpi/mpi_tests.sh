@@ -106,9 +106,30 @@ for r in csv.DictReader(open(sys.argv[1])):
   [ "$fail" = 0 ] && echo "ok   mpirun reproduce charles = committed results"
   ;;
 probe)
-  # probe writes a platform the simulator loads; compare prints the table and rejects bad files.
-  mpi 2 probe --out "$tmp/cluster.xml" --seconds 0.05 >"$tmp/out" 2>&1 || bad "probe: $(tail -3 "$tmp/out")"
-  "$zcube" run --machine "$tmp/cluster.xml" --fidelity analytic --algorithm elastic --size 128x128 \
+  # Outputs and flags are checked before the measurements: a usage error naming the flag.
+  for args in "--out $tmp/no/such/dir/c.xml" "--json $tmp/no/such/dir/c.json" "--seconds 0" \
+    "--seconds 1e9"; do
+    # shellcheck disable=SC2086
+    mpi 2 probe $args >"$tmp/out" 2>&1
+    rc=$?
+    flag=${args%% *}
+    { [ $rc = 2 ] && [ "$(grep -c '^zcube: error:' "$tmp/out")" -ge 1 ] &&
+      grep '^zcube: error:' "$tmp/out" | grep -q -- "$flag"; } ||
+      bad "probe $args: exit $rc, $(grep zcube "$tmp/out" | head -2)"
+  done
+  # The files named: --out itself, or one a node count (<stem>-<P>.xml) with --nodes.
+  mpi 2 probe --out "$tmp/no/c.xml" >"$tmp/out" 2>&1
+  grep -q "'$tmp/no/c.xml'" "$tmp/out" || bad "probe without --nodes: $(grep zcube "$tmp/out" | head -1)"
+  mpi 2 probe --out "$tmp/no/c.xml" --nodes 3,1 >"$tmp/out" 2>&1
+  grep -q "'$tmp/no/c-3.xml'" "$tmp/out" || bad "probe --nodes 3,1: $(grep zcube "$tmp/out" | head -1)"
+  # One probe (two ranks) for the rest: one node's platform takes the costs rank 0 timed alone, two
+  # nodes' the ranks' timed at once.
+  mpi 2 probe --out "$tmp/c.xml" --nodes 1,2 --json "$tmp/c.json" --seconds 0.02 >"$tmp/out" 2>&1 ||
+    bad "probe --nodes 1,2: $(tail -3 "$tmp/out")"
+  [ ! -e "$tmp/c.xml" ] && [ -s "$tmp/c-1.xml" ] && [ -s "$tmp/c-2.xml" ] ||
+    bad "probe --nodes 1,2 wrote: $(cd "$tmp" && ls c*.xml)"
+  # The probed platform loads in the simulator; compare prints the table and rejects bad files.
+  "$zcube" run --machine "$tmp/c-2.xml" --fidelity analytic --algorithm elastic --size 128x128 \
     --report "$tmp/pred.json" >"$tmp/out" 2>&1 || bad "run on the probed platform: $(tail -2 "$tmp/out")"
   mpi 2 run --backend mpi --algorithm elastic --size 128x128 --report "$tmp/meas.json" >/dev/null 2>&1 ||
     bad "measured run failed"
@@ -120,9 +141,6 @@ probe)
   rc=$?
   { [ $rc = 2 ] && [ "$(wc -l <"$tmp/err")" = 1 ] && grep -q "bad.json" "$tmp/err"; } ||
     bad "compare of a bad file: exit $rc, $(cat "$tmp/err")"
-  # One node's platform takes the costs rank 0 timed alone, two nodes' the ranks' timed at once.
-  mpi 2 probe --out "$tmp/c.xml" --nodes 1,2 --json "$tmp/c.json" --seconds 0.02 >"$tmp/out" 2>&1 ||
-    bad "probe --nodes 1,2: $(tail -3 "$tmp/out")"
   python3 - "$tmp" >"$tmp/costs" 2>&1 <<'PY' || bad "probe's costs per node count: $(cat "$tmp/costs")"
 import json, re, sys
 d = sys.argv[1]
