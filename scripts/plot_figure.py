@@ -3,9 +3,13 @@ Agg canvas directly, without pyplot's state machine, and one cache of text sizes
 The pictures are pyplot's, byte for byte: the same Figure, the same Agg renderer, the same PNG
 writer with the same options; only the bookkeeping around them is gone.
 """
+import contextlib
+
 import matplotlib
 
 matplotlib.use("Agg")
+import matplotlib.artist
+import matplotlib.axis
 import matplotlib.text
 from matplotlib.backends.backend_agg import FigureCanvasAgg, RendererAgg
 from matplotlib.figure import Figure
@@ -53,3 +57,37 @@ def _text_size(renderer, text, fontprop, ismath, dpi):
 
 if _per_renderer:  # (matplotlib 3.6 names it so; another version keeps its own cache)
     matplotlib.text._get_text_metrics_with_cache = _text_size
+
+
+# While a figure is laid out, or drawn, nothing in it moves, yet matplotlib asks the same things
+# several times: an axis works out its ticks once for its tick labels and again to place its label,
+# and tight_layout(rect=...) measures every Axes' bounding box twice (its second pass only fits the
+# margins into `rect`, the Axes where they were). Within one pass each is worked out once, so the
+# figure is the same to the byte.
+_update_ticks = matplotlib.axis.Axis._update_ticks
+_layout_bbox = matplotlib.artist._get_tightbbox_for_layout_only
+
+
+@contextlib.contextmanager
+def one_pass():
+    """The ticks of each axis and the layout bounding box of each artist, worked out once in the
+    block: for a layout, or a drawing, of one figure that nothing changes meanwhile."""
+    ticks, boxes = {}, {}
+
+    def axis_ticks(axis):
+        if axis not in ticks:
+            ticks[axis] = _update_ticks(axis)
+        return ticks[axis]
+
+    def layout_bbox(artist, *args, **kwargs):
+        if artist not in boxes:
+            boxes[artist] = _layout_bbox(artist, *args, **kwargs)
+        return boxes[artist]
+
+    matplotlib.axis.Axis._update_ticks = axis_ticks
+    matplotlib.artist._get_tightbbox_for_layout_only = layout_bbox
+    try:
+        yield
+    finally:
+        matplotlib.axis.Axis._update_ticks = _update_ticks
+        matplotlib.artist._get_tightbbox_for_layout_only = _layout_bbox

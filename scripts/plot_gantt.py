@@ -15,7 +15,7 @@ node), which tests read back.
 """
 import json, sys
 
-from plot_figure import META, figure  # matplotlib's Agg figures, no pyplot
+from plot_figure import META, figure, one_pass  # matplotlib's Agg figures, no pyplot
 import matplotlib
 import numpy as np
 from matplotlib.artist import setp
@@ -241,7 +241,8 @@ def chart(report_path, out):
     meta = dict(META.get(out.rsplit(".", 1)[-1], {}))
     if out.endswith(".png"):
         meta["zcube-gantt"] = json.dumps(layout(fig, ax, tracks))
-    fig.savefig(out, dpi=DPI, metadata=meta)
+    with one_pass():
+        fig.savefig(out, dpi=DPI, metadata=meta)
 
 
 if __name__ == "__main__":

@@ -20,7 +20,7 @@ number of series and of out-of-memory marks) as JSON: the tests read the plots f
 import argparse, csv, json, math, os, re, sys
 from collections import defaultdict
 
-from plot_figure import META, subplots  # matplotlib's Agg figures, no pyplot
+from plot_figure import META, one_pass, subplots  # matplotlib's Agg figures, no pyplot
 from matplotlib.lines import Line2D
 from matplotlib.ticker import FixedLocator, FuncFormatter, NullFormatter
 
@@ -101,8 +101,10 @@ def save(fig, path):
     if FIGURES is not None:
         describe(fig, path)
     # Room for a figure legend under the panels and for the title above them.
-    fig.tight_layout(rect=(0, 0.09 if fig.legends else 0, 1, 0.96 if fig._suptitle else 1))
-    save_atomically(path, lambda tmp: fig.savefig(tmp, dpi=110, metadata=META[FORMAT]))
+    with one_pass():
+        fig.tight_layout(rect=(0, 0.09 if fig.legends else 0, 1, 0.96 if fig._suptitle else 1))
+    with one_pass():
+        save_atomically(path, lambda tmp: fig.savefig(tmp, dpi=110, metadata=META[FORMAT]))
 
 
 def describe(fig, path):
