@@ -65,19 +65,27 @@ if _per_renderer:  # (matplotlib 3.6 names it so; another version keeps its own 
 # margins into `rect`, the Axes where they were). Within one pass each is worked out once, so the
 # figure is the same to the byte.
 _update_ticks = matplotlib.axis.Axis._update_ticks
+_ticklabel_bboxes = matplotlib.axis.Axis._get_ticklabel_bboxes
 _layout_bbox = matplotlib.artist._get_tightbbox_for_layout_only
 
 
 @contextlib.contextmanager
 def one_pass():
-    """The ticks of each axis and the layout bounding box of each artist, worked out once in the
-    block: for a layout, or a drawing, of one figure that nothing changes meanwhile."""
-    ticks, boxes = {}, {}
+    """The ticks of each axis, the boxes of their labels and the layout bounding box of each
+    artist, worked out once in the block: for a layout, or a drawing, of one figure that nothing
+    changes meanwhile."""
+    ticks, labels, boxes = {}, {}, {}
 
     def axis_ticks(axis):
         if axis not in ticks:
             ticks[axis] = _update_ticks(axis)
         return ticks[axis]
+
+    def label_boxes(axis, shown, renderer=None):
+        key = (axis, id(shown))  # `shown` is a list axis_ticks keeps
+        if key not in labels:
+            labels[key] = _ticklabel_bboxes(axis, shown, renderer)
+        return labels[key]
 
     def layout_bbox(artist, *args, **kwargs):
         if artist not in boxes:
@@ -85,9 +93,11 @@ def one_pass():
         return boxes[artist]
 
     matplotlib.axis.Axis._update_ticks = axis_ticks
+    matplotlib.axis.Axis._get_ticklabel_bboxes = label_boxes
     matplotlib.artist._get_tightbbox_for_layout_only = layout_bbox
     try:
         yield
     finally:
         matplotlib.axis.Axis._update_ticks = _update_ticks
+        matplotlib.axis.Axis._get_ticklabel_bboxes = _ticklabel_bboxes
         matplotlib.artist._get_tightbbox_for_layout_only = _layout_bbox
