@@ -17,7 +17,7 @@ usage: plot_results.py [--format png|svg|pdf] [--describe OUT.json] RESULTS_DIR
 --describe writes what every figure shows (titles, axis labels and scales, legend entries, the
 number of series and of out-of-memory marks) as JSON: the tests read the plots from it.
 """
-import argparse, csv, json, math, os, re, sys
+import argparse, csv, gc, json, math, os, re, sys
 from collections import defaultdict
 
 from plot_figure import META, one_pass, subplots  # matplotlib's Agg figures, no pyplot
@@ -643,8 +643,13 @@ class Pool:
             self.reap()
         sys.stdout.flush()
         sys.stderr.flush()
+        # A collection reads and writes the header of every object it tracks, so in a forked
+        # process it copies the inherited pages (copy-on-write): the objects so far are left out
+        # of later collections (gc.freeze), and a figure's short-lived process collects nothing.
+        gc.freeze()
         pid = os.fork()
         if pid == 0:
+            gc.disable()
             status = 1
             try:
                 part(*args)
