@@ -8,6 +8,11 @@
 // Made from a Bytes (implicitly, so `Message{pack(v), n}` reads as before); read as a const Bytes
 // (implicitly too); take() gives the bytes back as a Bytes of one's own, moved when this is the
 // only holder, copied otherwise.
+//
+// Made from a RunBytes with repeated runs (the background of a frame buffer's rows never drawn),
+// it keeps the runs: its size is the whole string's, a receiver that knows the layout reads the
+// runs (runs()), and whoever reads its bytes (the MPI backend sending it) gets the whole string,
+// written out once.
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -16,26 +21,34 @@
 #include <type_traits>
 #include <vector>
 
-namespace zc {
+#include "util/run_bytes.hpp"
 
-using Bytes = std::vector<std::uint8_t>;
+namespace zc {
 
 class Payload {
 public:
   Payload() = default;
-  Payload(Bytes b); // NOLINT(google-explicit-constructor): a payload is made from its bytes
+  Payload(Bytes b);    // NOLINT(google-explicit-constructor): a payload is made from its bytes
+  Payload(RunBytes b); // NOLINT(google-explicit-constructor)
 
-  const Bytes& bytes() const { return buf_ ? *buf_ : none(); }
+  const Bytes& bytes() const { return buf_ ? *buf_ : runs_ ? runs_->whole() : none(); }
+  // The runs of a payload made from a RunBytes with repeated runs; null otherwise.
+  const RunBytes* runs() const { return runs_.get(); }
   operator const Bytes&() const& { return bytes(); } // NOLINT(google-explicit-constructor)
   // The bytes as a vector of one's own: moved out when no one else holds them, else copied.
   Bytes take() && {
+    if (runs_) {
+      Bytes b = runs_->whole();
+      runs_.reset();
+      return b;
+    }
     if (!buf_) return {};
     Bytes b = buf_.use_count() == 1 ? std::move(*buf_) : *buf_;
     buf_.reset();
     return b;
   }
 
-  std::size_t size() const { return buf_ ? buf_->size() : 0; }
+  std::size_t size() const { return buf_ ? buf_->size() : runs_ ? runs_->size() : 0; }
   bool empty() const { return size() == 0; }
   const std::uint8_t* data() const { return bytes().data(); }
   Bytes::const_iterator begin() const { return bytes().begin(); }
@@ -51,11 +64,13 @@ public:
     return {reinterpret_cast<const T*>(data()), size() / sizeof(T)};
   }
   // How many payloads share these bytes (0 when empty).
-  long holders() const { return buf_.use_count(); }
-  bool shares(const Payload& o) const { return buf_ && buf_ == o.buf_; }
+  long holders() const { return runs_ ? runs_.use_count() : buf_.use_count(); }
+  bool shares(const Payload& o) const {
+    return (buf_ && buf_ == o.buf_) || (runs_ && runs_ == o.runs_);
+  }
 
   friend bool operator==(const Payload& a, const Payload& b) {
-    return a.buf_ == b.buf_ || a.bytes() == b.bytes();
+    return a.shares(b) || a.bytes() == b.bytes();
   }
   friend bool operator==(const Payload& a, const Bytes& b) { return a.bytes() == b; }
 
@@ -64,7 +79,8 @@ private:
     static const Bytes empty;
     return empty;
   }
-  std::shared_ptr<Bytes> buf_; // never written through once made
+  std::shared_ptr<Bytes> buf_;           // never written through once made
+  std::shared_ptr<const RunBytes> runs_; // instead of buf_: a string with repeated runs
 };
 
 } // namespace zc

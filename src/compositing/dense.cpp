@@ -69,15 +69,19 @@ private:
   bool sends(const Routing& r, int y, int k) const { return held_[y] && r.dest[y] == k; }
 
   // A message over the rows kept (its runs in order) z-buffered into them.
-  std::uint64_t merge_runs(const Bytes& payload) {
+  // (A message from this process keeps the rows its sender never drew as repeated runs, read as
+  // such; one from another process, the MPI backend's, is the whole string.)
+  std::uint64_t merge_runs(const Payload& payload) {
     const std::size_t W = std::size_t(full_.width());
-    if (kept_.size() == 1) return full_.merge_locations(payload, std::size_t(kept_[0].first) * W);
+    const RunBytes* runs = payload.runs();
     std::uint64_t merged = 0;
     std::size_t at = 0;
     for (auto [y0, y1] : kept_) {
       const std::size_t bytes = std::size_t(y1 - y0) * W * Framebuffer::kLocationBytes;
       if (at + bytes > payload.size()) throw std::logic_error("dense: a message short of its rows");
-      merged += full_.merge_locations(payload.data() + at, bytes, std::size_t(y0) * W);
+      const std::size_t first = std::size_t(y0) * W;
+      merged += runs ? full_.merge_locations(*runs, at, bytes, first)
+                     : full_.merge_locations(payload.data() + at, bytes, first);
       at += bytes;
     }
     return merged;
@@ -87,13 +91,13 @@ private:
   Message pack(const std::vector<std::pair<int, int>>& band, Node& n) {
     const std::size_t W = std::size_t(full_.width());
     Message m;
-    Bytes rows;
+    RunBytes rows;
     for (auto [y0, y1] : band) {
-      Bytes b = full_.pack_locations(std::size_t(y0) * W, std::size_t(y1 - y0) * W);
-      if (rows.empty())
+      RunBytes b = full_.pack_location_runs(std::size_t(y0) * W, std::size_t(y1 - y0) * W);
+      if (rows.size() == 0)
         rows = std::move(b); // one band (the usual case): its packed bytes are the payload
       else
-        rows.insert(rows.end(), b.begin(), b.end());
+        rows.append(b);
       m.charged += std::size_t(y1 - y0) * W * rec_.location;
     }
     m.payload = std::move(rows);

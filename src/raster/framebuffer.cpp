@@ -142,35 +142,56 @@ std::uint64_t Framebuffer::merge(const Framebuffer& o) {
   return compares;
 }
 
-std::vector<std::uint8_t> Framebuffer::pack_locations(std::size_t first, std::size_t n) const {
-  // Appended, not cleared then overwritten: a band of a large picture is a hundred megabytes.
-  std::vector<std::uint8_t> out;
-  out.reserve(kLocationBytes * n);
-  // Each plane run by run: a row not touched yet is sent as its background, without filling it
-  // in here.
+template <class Data, class Fill>
+void Framebuffer::for_each_location_run(std::size_t first, std::size_t n, Data data,
+                                        Fill fill) const {
   const std::size_t W = std::size_t(width_), end = first + n;
-  const auto append = [&](const void* plane, std::size_t size, const void* background) {
-    const auto* p = static_cast<const std::uint8_t*>(plane);
-    const auto* bg = static_cast<const std::uint8_t*>(background);
+  const auto plane = [&](const void* bytes, std::size_t size, const void* background) {
+    const auto* p = static_cast<const std::uint8_t*>(bytes);
     for (std::size_t i = first; i < end;) {
       const std::size_t r = i / W, to = std::min(end, (r + 1) * W);
-      if (!stale_[r]) {
-        out.insert(out.end(), p + size * i, p + size * to);
-      } else if (bg[0] == bg[1] && bg[1] == bg[2] && (size < 4 || bg[2] == bg[3])) {
-        out.insert(out.end(), size * (to - i), bg[0]);
-      } else {
-        const std::size_t at = out.size();
-        out.resize(at + size * (to - i));
-        for (std::size_t k = at; k < out.size(); k += size)
-          std::memcpy(&out[k], bg, size);
-      }
+      if (!stale_[r])
+        data(p + size * i, size * (to - i));
+      else
+        fill(static_cast<const std::uint8_t*>(background), size, size * (to - i));
       i = to;
     }
   };
   const float inf = std::numeric_limits<float>::infinity();
-  append(rgb_.data(), 3, bg_);
-  append(depth_.data(), 4, &inf);
-  append(ids_.data(), 4, &kNoTriangle);
+  plane(rgb_.data(), 3, bg_);
+  plane(depth_.data(), 4, &inf);
+  plane(ids_.data(), 4, &kNoTriangle);
+}
+
+std::vector<std::uint8_t> Framebuffer::pack_locations(std::size_t first, std::size_t n) const {
+  // Appended, not cleared then overwritten: a band of a large picture is a hundred megabytes.
+  std::vector<std::uint8_t> out;
+  out.reserve(kLocationBytes * n);
+  // A row not touched yet is sent as its background, without filling it in here.
+  const auto data = [&](const std::uint8_t* p, std::size_t bytes) {
+    out.insert(out.end(), p, p + bytes);
+  };
+  const auto fill = [&](const std::uint8_t* bg, std::size_t size, std::size_t bytes) {
+    if (bg[0] == bg[1] && bg[1] == bg[2] && (size < 4 || bg[2] == bg[3])) {
+      out.insert(out.end(), bytes, bg[0]);
+      return;
+    }
+    const std::size_t at = out.size();
+    out.resize(at + bytes);
+    for (std::size_t k = at; k < out.size(); k += size)
+      std::memcpy(&out[k], bg, size);
+  };
+  for_each_location_run(first, n, data, fill);
+  return out;
+}
+
+RunBytes Framebuffer::pack_location_runs(std::size_t first, std::size_t n) const {
+  RunBytes out;
+  for_each_location_run(
+      first, n, [&](const std::uint8_t* p, std::size_t bytes) { out.append(p, bytes); },
+      [&](const std::uint8_t* bg, std::size_t size, std::size_t bytes) {
+        out.append_fill(bg, size, bytes);
+      });
   return out;
 }
 
@@ -195,30 +216,62 @@ std::size_t Framebuffer::merge_locations(const std::uint8_t* msg, std::size_t si
   const std::uint8_t* ids = msg + 7 * n;
   const std::size_t W = std::size_t(width_);
   for (std::size_t k = 0; k < n;) {
-    // Row by row: an uncovered location never wins (in_front against the background is false),
-    // so a row not touched yet stays untouched when the message's part of it covers nothing.
-    const std::size_t r = (first + k) / W, to = std::min(n, (r + 1) * W - first);
-    if (stale_[r] && all_uncovered(ids + 4 * k, to - k)) {
+    const std::size_t to = std::min(n, ((first + k) / W + 1) * W - first);
+    merge_row(msg + 3 * k, zs + 4 * k, ids + 4 * k, to - k, first + k);
+    k = to;
+  }
+  return n;
+}
+
+std::size_t Framebuffer::merge_locations(const RunBytes& msg, std::size_t at, std::size_t size,
+                                         std::size_t first) {
+  const std::size_t n = size / kLocationBytes;
+  if (size % kLocationBytes != 0 || first + n > ids_.size() || at + size > msg.size())
+    throw std::runtime_error("Framebuffer::merge_locations: message does not fit the buffer");
+  const std::size_t W = std::size_t(width_);
+  std::vector<std::uint8_t> row; // a row whose planes are not all written runs, written out
+  for (std::size_t k = 0; k < n;) {
+    const std::size_t to = std::min(n, ((first + k) / W + 1) * W - first), m = to - k;
+    const std::size_t rgb_at = at + 3 * k, zs_at = at + 3 * n + 4 * k, ids_at = at + 7 * n + 4 * k;
+    if (msg.is_fill_of(ids_at, 4 * m, 0xff)) { // uncovered: never in front
       k = to;
       continue;
     }
-    ready_local(int(r));
-#ifdef ZC_HAVE_AVX2_LANES
-    if (avx2::available()) {
-      const std::size_t at = first + k;
-      k += merge_eights_avx2(to - k, zs + 4 * k, ids + 4 * k, msg + 3 * k, depth_.data() + at,
-                             ids_.data() + at, rgb_.data() + 3 * at);
+    const std::uint8_t *rgb = msg.find(rgb_at, 3 * m), *zs = msg.find(zs_at, 4 * m),
+                       *ids = msg.find(ids_at, 4 * m);
+    if (!rgb || !zs || !ids) {
+      row.resize(kLocationBytes * m);
+      msg.copy(rgb_at, 3 * m, row.data());
+      msg.copy(zs_at, 4 * m, row.data() + 3 * m);
+      msg.copy(ids_at, 4 * m, row.data() + 7 * m);
+      rgb = row.data(), zs = row.data() + 3 * m, ids = row.data() + 7 * m;
     }
-#endif
-    for (; k < to; ++k) {
-      float z;
-      std::uint32_t id;
-      std::memcpy(&z, zs + 4 * k, 4);
-      std::memcpy(&id, ids + 4 * k, 4);
-      test_and_write(first + k, z, id, msg + 3 * k);
-    }
+    merge_row(rgb, zs, ids, m, first + k);
+    k = to;
   }
   return n;
+}
+
+void Framebuffer::merge_row(const std::uint8_t* rgb, const std::uint8_t* zs,
+                            const std::uint8_t* ids, std::size_t m, std::size_t at) {
+  // An uncovered location never wins (in_front against the background is false), so a row not
+  // touched yet stays untouched when the message's part of it covers nothing.
+  const std::size_t r = at / std::size_t(width_);
+  if (stale_[r] && all_uncovered(ids, m)) return;
+  ready_local(int(r));
+  std::size_t k = 0;
+#ifdef ZC_HAVE_AVX2_LANES
+  if (avx2::available())
+    k = merge_eights_avx2(m, zs, ids, rgb, depth_.data() + at, ids_.data() + at,
+                          rgb_.data() + 3 * at);
+#endif
+  for (; k < m; ++k) {
+    float z;
+    std::uint32_t id;
+    std::memcpy(&z, zs + 4 * k, 4);
+    std::memcpy(&id, ids + 4 * k, 4);
+    test_and_write(at + k, z, id, rgb + 3 * k);
+  }
 }
 
 void Framebuffer::paste(const Framebuffer& part) {

@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "raster/recent_lines.hpp"
+#include "util/run_bytes.hpp"
 
 namespace zc {
 
@@ -104,6 +105,9 @@ public:
   // kLocationBytes a location.
   static constexpr std::size_t kLocationBytes = 11;
   std::vector<std::uint8_t> pack_locations(std::size_t first, std::size_t count) const;
+  // The same string as runs: a row not touched yet is a repeated run of each plane's background,
+  // not written out (util/run_bytes.hpp).
+  RunBytes pack_location_runs(std::size_t first, std::size_t count) const;
   // Z-buffers such a message into the locations from index `first` (test_and_write at each);
   // returns the number of locations it held.
   std::size_t merge_locations(const std::vector<std::uint8_t>& msg, std::size_t first) {
@@ -111,6 +115,10 @@ public:
   }
   // The same over `size` bytes at `msg` (a run of a larger message, read in place).
   std::size_t merge_locations(const std::uint8_t* msg, std::size_t size, std::size_t first);
+  // The same over bytes [at, at + size) of a string of runs (pack_location_runs): a row whose ids
+  // are a repeated run of kNoTriangle covers nothing and is skipped unread.
+  std::size_t merge_locations(const RunBytes& msg, std::size_t at, std::size_t size,
+                              std::size_t first);
   // Copy the rows of `part` (a band or interleaved set) into this buffer (strip pasting).
   void paste(const Framebuffer& part);
 
@@ -140,6 +148,14 @@ public:
 
 private:
   void fill_row(int r) const;
+  // Calls data(plane bytes, count) for each run of rows already touched and fill(background,
+  // element size, count) for each run not touched yet, plane by plane, over locations
+  // [first, first + n): the walk of pack_locations and pack_location_runs.
+  template <class Data, class Fill>
+  void for_each_location_run(std::size_t first, std::size_t n, Data data, Fill fill) const;
+  // Z-buffers m locations from index `at` (one row or part of one) given by their three planes.
+  void merge_row(const std::uint8_t* rgb, const std::uint8_t* zs, const std::uint8_t* ids,
+                 std::size_t m, std::size_t at);
   void ready_local_const(int r) const {
     if (stale_[std::size_t(r)]) fill_row(r);
   }

@@ -80,3 +80,30 @@ TEST(SharedPayloads, CollectivesHandEveryNodeTheSendersBuffer) {
     EXPECT_EQ(r["status"], "ok") << (topo == Topology::Cube ? "cube: " : "ring: ") << r.dump();
   }
 }
+
+// A payload of runs (the rows a node never drew, as their background) stands for its whole string:
+// its size, its bytes, its equality and take() are the whole string's; only a reader that asks
+// for its runs sees them.
+TEST(Payload, MadeOfRepeatedRunsReadsAsTheWholeString) {
+  const std::uint8_t bg[3] = {1, 2, 3};
+  const Bytes head = {9, 9};
+  RunBytes r;
+  r.append(head.data(), head.size());
+  r.append_fill(bg, 3, 6);
+  const Bytes whole = {9, 9, 1, 2, 3, 1, 2, 3};
+  Payload p(r);
+  ASSERT_NE(p.runs(), nullptr);
+  EXPECT_EQ(p.size(), whole.size());
+  EXPECT_EQ(p.bytes(), whole);
+  EXPECT_TRUE(p == Payload(whole));
+  Payload q = p;
+  EXPECT_TRUE(q.shares(p));
+  EXPECT_EQ(p.holders(), 2);
+  EXPECT_EQ(std::move(q).take(), whole);
+  // Without a repeated run it is plain bytes.
+  RunBytes plain;
+  plain.append(head.data(), head.size());
+  const Payload b(std::move(plain));
+  EXPECT_EQ(b.runs(), nullptr);
+  EXPECT_EQ(b.bytes(), head);
+}

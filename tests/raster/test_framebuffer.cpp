@@ -107,3 +107,64 @@ TEST(Framebuffer, MergeLocationsEqualsTestAndWriteAtEveryLocation) {
     ASSERT_EQ(target.rgb(), expect.rgb()) << "trial " << trial;
   }
 }
+
+// A band packed as runs (the rows not touched yet as their planes' backgrounds) is the packed
+// string, and merging it gives what merging the string gives, rows the message does not cover left
+// untouched; so does a hand-made message whose covered row has a repeated colour plane (written out
+// to be merged).
+TEST(Framebuffer, LocationRunsArePackedLocations) {
+  const int W = 13, H = 6;
+  const glm::vec3 bg(0.2f, 0.5f, 1);
+  std::mt19937 rng(11);
+  Framebuffer source(W, RowSet::all(H), bg);
+  for (int y : {1, 2, 4}) {
+    source.ready_row(y);
+    for (int x = 0; x < W; x += 1 + int(rng() % 3)) {
+      const std::uint8_t c[3] = {std::uint8_t(rng()), std::uint8_t(rng()), std::uint8_t(rng())};
+      source.test_and_write(source.index(x, y), float(rng() % 100) / 100.f, rng() % 50, c);
+    }
+  }
+  ASSERT_TRUE(source.untouched(0));
+  ASSERT_TRUE(source.untouched(3));
+  for (std::size_t first : {0u, 5u, 13u, 26u})
+    for (std::size_t n : {1u, 13u, 20u, 39u}) {
+      if (first + n > std::size_t(W * H)) continue;
+      const RunBytes runs = source.pack_location_runs(first, n);
+      const Bytes bytes = source.pack_locations(first, n);
+      ASSERT_EQ(runs.whole(), bytes) << first << "+" << n;
+      Framebuffer a(W, RowSet::all(H), bg), b(W, RowSet::all(H), bg);
+      a.ready_row(2); // a target row already drawn (background there too)
+      b.ready_row(2);
+      ASSERT_EQ(a.merge_locations(runs, 0, runs.size(), first), n);
+      ASSERT_EQ(b.merge_locations(bytes, first), n);
+      for (int y = 0; y < H; ++y)
+        EXPECT_EQ(a.untouched(y), b.untouched(y)) << "row " << y;
+      EXPECT_TRUE(a.untouched(3));
+      EXPECT_EQ(a.rgb(), b.rgb());
+      EXPECT_EQ(a.ids(), b.ids());
+      EXPECT_EQ(0, std::memcmp(a.depth().data(), b.depth().data(), 4 * W * H));
+    }
+  // One row whose colours are a repeated run but whose ids are not: merged from its written-out
+  // planes, at an offset into the message.
+  const std::uint8_t grey[3] = {40, 40, 40}, pad = 0;
+  RunBytes msg;
+  msg.append_fill(&pad, 1, 5);
+  msg.append_fill(grey, 3, 3 * W);
+  Bytes zs(4 * W), ids(4 * W);
+  for (int x = 0; x < W; ++x) {
+    const float z = 0.5f;
+    const std::uint32_t id = x % 2 ? kNoTriangle : std::uint32_t(x);
+    std::memcpy(&zs[4 * x], &z, 4);
+    std::memcpy(&ids[4 * x], &id, 4);
+  }
+  msg.append(zs.data(), zs.size());
+  msg.append(ids.data(), ids.size());
+  Framebuffer a(W, RowSet::all(H), bg), b(W, RowSet::all(H), bg);
+  ASSERT_EQ(a.merge_locations(msg, 5, 11 * W, 3 * W), std::size_t(W));
+  ASSERT_EQ(b.merge_locations(Bytes(msg.whole().begin() + 5, msg.whole().end()), 3 * W),
+            std::size_t(W));
+  EXPECT_FALSE(a.untouched(3));
+  EXPECT_EQ(a.rgb(), b.rgb());
+  EXPECT_EQ(a.ids(), b.ids());
+  EXPECT_EQ(a.ids()[a.index(2, 3)], 2u);
+}
