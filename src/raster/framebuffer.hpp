@@ -143,6 +143,8 @@ public:
   const std::uint8_t* rgb_data() const { return rgb_.data(); }
   // True when row y (a row of the set) has not been touched since the clear: all background.
   bool untouched(int y) const { return stale_[std::size_t(rows_.local(y))] != 0; }
+  // The background colour (what an untouched row's pixels read as).
+  const std::uint8_t* background_rgb() const { return bg_; }
   // The depth lines the z-buffer entered last (draw_batch's far_lines); clear() resets it.
   RecentLines& recent_lines() { return recent_; }
 

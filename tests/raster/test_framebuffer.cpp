@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "raster/framebuffer.hpp"
+#include "raster/image_io.hpp"
 
 using namespace zc;
 
@@ -167,4 +168,31 @@ TEST(Framebuffer, LocationRunsArePackedLocations) {
   EXPECT_EQ(a.rgb(), b.rgb());
   EXPECT_EQ(a.ids(), b.ids());
   EXPECT_EQ(a.ids()[a.index(2, 3)], 2u);
+}
+
+// The digest and the depth comparison read a row not touched yet as its background without
+// filling it in: the same answers as on an eagerly cleared copy, the row still untouched after.
+TEST(Framebuffer, DigestAndDepthMapReadUntouchedRowsAsBackground) {
+  const int W = 7;
+  Framebuffer fb(W, RowSet::interleaved(1, 2, 9), glm::vec3(0.2f, 0.5f, 1)); // rows 1, 3, 5, 7
+  fb.ready_row(3);
+  const std::uint8_t red[3] = {255, 0, 0};
+  ASSERT_TRUE(fb.test_and_write(fb.index(4, 3), 0.25f, 3, red));
+  Framebuffer eager = fb;
+  eager.rgb(); // every row filled in
+  ASSERT_FALSE(eager.untouched(5));
+  const std::vector<float> map = depth_map(eager);
+  EXPECT_EQ(image_sha256(fb), image_sha256(eager));
+  EXPECT_TRUE(same_depth_map(fb, map));
+  EXPECT_TRUE(fb.untouched(1));
+  EXPECT_TRUE(fb.untouched(5));
+  // A map that differs in an untouched row, or in the drawn pixel, is told apart.
+  std::vector<float> other = map;
+  other[std::size_t(2 * W + 1)] = 0.5f; // row 5 (local 2)
+  EXPECT_FALSE(same_depth_map(fb, other));
+  other = map;
+  other[fb.index(4, 3)] = 1.0f;
+  EXPECT_FALSE(same_depth_map(fb, other));
+  EXPECT_NE(image_sha256(fb),
+            image_sha256(Framebuffer(W, RowSet::interleaved(1, 2, 9), glm::vec3(0.2f, 0.5f, 1))));
 }
