@@ -187,6 +187,11 @@ std::vector<std::uint8_t> Framebuffer::pack_locations(std::size_t first, std::si
 
 RunBytes Framebuffer::pack_location_runs(std::size_t first, std::size_t n) const {
   RunBytes out;
+  std::size_t written = 0;
+  for_each_location_run(
+      first, n, [&](const std::uint8_t*, std::size_t bytes) { written += bytes; },
+      [](const std::uint8_t*, std::size_t, std::size_t) {});
+  out.reserve(written);
   for_each_location_run(
       first, n, [&](const std::uint8_t* p, std::size_t bytes) { out.append(p, bytes); },
       [&](const std::uint8_t* bg, std::size_t size, std::size_t bytes) {

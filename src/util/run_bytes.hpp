@@ -14,6 +14,8 @@ using Bytes = std::vector<std::uint8_t>;
 
 class RunBytes {
 public:
+  // Room for n written bytes in all (appending them then moves none).
+  void reserve(std::size_t n) { written_.reserve(n); }
   // Appends n bytes from p.
   void append(const std::uint8_t* p, std::size_t n);
   // Appends n bytes of `pattern` (1 to 4 bytes) repeated from its first byte on.
