@@ -72,7 +72,14 @@ ProjectedMesh::ProjectedMesh(NodeContext& ctx, const NodeRenderer& nr, const Mes
 bool ProjectedMesh::rows(const NodeRenderer& nr, std::uint32_t t, int& y0, int& y1) const {
   const Triangle& tr = mesh.tris[t].tri;
   const ProjectedVertex* pp[3] = {&pv[tr.v[0]], &pv[tr.v[1]], &pv[tr.v[2]]};
-  return nr.rows(mesh.tris[t].id, pp, y0, y1);
+  if (nr.has_setup_cache()) return nr.rows(mesh.tris[t].id, pp, y0, y1);
+  if (extents_.size() != pv.size()) {
+    extents_.resize(pv.size());
+    for (std::size_t i = 0; i < pv.size(); ++i)
+      extents_[i] = vertex_extent(pv[i], nr.height());
+  }
+  const VertexExtent* ep[3] = {&extents_[tr.v[0]], &extents_[tr.v[1]], &extents_[tr.v[2]]};
+  return nr.rows(mesh.tris[t].id, pp, ep, y0, y1);
 }
 
 } // namespace zc::blazek

@@ -40,6 +40,11 @@ struct ProjectedMesh {
   ProjectedMesh(NodeContext& ctx, const NodeRenderer& nr, const Mesh& m);
   // Rows [y0, y1] triangle t can touch (false: none: culled or off screen).
   bool rows(const NodeRenderer& nr, std::uint32_t t, int& y0, int& y1) const;
+
+private:
+  // What row_extent needs of each vertex, worked out on the first rows() a process's set-up cache
+  // does not answer (host time only: the node is charged per triangle, as before).
+  mutable std::vector<VertexExtent> extents_;
 };
 
 } // namespace zc::blazek

@@ -165,20 +165,14 @@ bool inside_view(const ClipPolygon& poly) {
   return in;
 }
 
-// The clip outcodes of three projected vertices as clip_polygon works them out (the same planes
-// and arithmetic on the same doubles; NaN counts as outside): the bits all share, the bits any has.
-void outcodes(const ProjectedVertex* const v[3], unsigned& all_and, unsigned& any_or) {
-  all_and = 0x3f;
-  any_or = 0;
-  for (int i = 0; i < 3; ++i) {
-    const double x = v[i]->clip[0], y = v[i]->clip[1], z = v[i]->clip[2], w = v[i]->clip[3];
-    const double gw = kGuardBand * w;
-    const unsigned code = unsigned(!(z + w >= 0)) | unsigned(!(w - z >= 0)) << 1 |
-                          unsigned(!(gw + x >= 0)) << 2 | unsigned(!(gw - x >= 0)) << 3 |
-                          unsigned(!(gw + y >= 0)) << 4 | unsigned(!(gw - y >= 0)) << 5;
-    all_and &= code;
-    any_or |= code;
-  }
+// A projected vertex's clip outcode as clip_polygon works it out (the same planes and arithmetic on
+// the same doubles; NaN counts as outside).
+unsigned outcode(const ProjectedVertex& v) {
+  const double x = v.clip[0], y = v.clip[1], z = v.clip[2], w = v.clip[3];
+  const double gw = kGuardBand * w;
+  return unsigned(!(z + w >= 0)) | unsigned(!(w - z >= 0)) << 1 | unsigned(!(gw + x >= 0)) << 2 |
+         unsigned(!(gw - x >= 0)) << 3 | unsigned(!(gw + y >= 0)) << 4 |
+         unsigned(!(gw - y >= 0)) << 5;
 }
 
 // snap(v).Y of a vertex inside every plane, without building its clip vertex.
@@ -211,12 +205,27 @@ bool ScreenTriangle::span(int y, int width, int& x0, int& x1) const {
   return true;
 }
 
+VertexExtent vertex_extent(const ProjectedVertex& v, int height) {
+  VertexExtent e;
+  e.code = outcode(v);
+  if (e.code == 0) e.y = snapped_y(v, height);
+  return e;
+}
+
 bool row_extent(const ProjectedVertex* const v[3], int width, int height, int& y0, int& y1) {
   (void)width; // the rows do not depend on it
+  const VertexExtent e[3] = {vertex_extent(*v[0], height), vertex_extent(*v[1], height),
+                             vertex_extent(*v[2], height)};
+  const VertexExtent* const ep[3] = {&e[0], &e[1], &e[2]};
+  return row_extent(v, ep, height, y0, y1);
+}
+
+bool row_extent(const ProjectedVertex* const v[3], const VertexExtent* const e[3], int height,
+                int& y0, int& y1) {
   // Only the outcodes are needed from the clipper; most triangles lie inside every plane, and their
   // rows come from the vertices as set-up snaps them (no clip polygon built for them).
-  unsigned all_and = 0, any_or = 0;
-  outcodes(v, all_and, any_or);
+  const unsigned all_and = e[0]->code & e[1]->code & e[2]->code;
+  const unsigned any_or = e[0]->code | e[1]->code | e[2]->code;
   if (all_and) return false;
   if (any_or) { // cut, or entirely outside once cut: clip_polygon tells which
     ClipPolygon poly;
@@ -229,12 +238,8 @@ bool row_extent(const ProjectedVertex* const v[3], int width, int height, int& y
     y1 = height - 1;
     return height > 0;
   }
-  std::int64_t miny = INT64_MAX, maxy = INT64_MIN;
-  for (int i = 0; i < 3; ++i) {
-    const std::int64_t Y = snapped_y(*v[i], height);
-    miny = std::min(miny, Y);
-    maxy = std::max(maxy, Y);
-  }
+  const std::int64_t miny = std::min({e[0]->y, e[1]->y, e[2]->y});
+  const std::int64_t maxy = std::max({e[0]->y, e[1]->y, e[2]->y});
   y0 = int(std::max<std::int64_t>(0, ceil_div(miny - kSub / 2, kSub)));
   y1 = int(std::min<std::int64_t>(height - 1, floor_div(maxy - kSub / 2, kSub)));
   return y0 <= y1;

@@ -74,6 +74,18 @@ struct SetupInput {
 // when it does (clipping only shrinks). Returns false when it certainly touches no row.
 bool row_extent(const ProjectedVertex* const v[3], int width, int height, int& y0, int& y1);
 
+// What row_extent needs of one projected vertex: its clip outcode and, when it lies inside every
+// plane, its snapped y. A mesh whose triangles share vertices (about six a vertex) works it out
+// once a vertex instead of once a corner.
+struct VertexExtent {
+  std::int64_t y = 0; // snapped y, fixed point (code 0 only)
+  unsigned code = 0;  // the planes it lies outside (NaN: outside)
+};
+VertexExtent vertex_extent(const ProjectedVertex& v, int height);
+// row_extent from the corners' extents, e[k] = vertex_extent(*v[k], height): the same answer.
+bool row_extent(const ProjectedVertex* const v[3], const VertexExtent* const e[3], int height,
+                int& y0, int& y1);
+
 // Appends the screen triangles of one scene triangle (0 if culled or off-screen, several if
 // clipped).
 void setup_triangle(const SetupInput& in, int width, int height, bool cull_back, TriangleBatch& out,
