@@ -76,7 +76,7 @@ BackgroundJob::~BackgroundJob() {
 }
 
 bool BackgroundJob::finished() {
-  if (!ended_ && pid_ > 0) ended_ = waitpid(pid_, &status_, WNOHANG) == pid_;
+  if (!ended_ && pid_ > 0) ended_ = wait_child(pid_, &status_, WNOHANG, &cost_) == pid_;
   return ended_;
 }
 
@@ -95,8 +95,7 @@ std::string BackgroundJob::wait() {
   }
   close(fd_);
   fd_ = -1;
-  while (!ended_ && waitpid(pid_, &status_, 0) < 0 && errno == EINTR) {
-  }
+  if (!ended_) wait_child(pid_, &status_, 0, &cost_);
   ended_ = true;
   const int status = status_;
   pid_ = -1;

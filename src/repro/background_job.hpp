@@ -9,6 +9,8 @@
 #include <functional>
 #include <string>
 
+#include "util/child_cost.hpp"
+
 namespace zc {
 
 class BackgroundJob {
@@ -26,11 +28,14 @@ public:
   bool succeeded() const;
   // Waits for the job and copies its standard error to ours; the error that stopped it, or "".
   std::string wait();
+  // What the job (with the simulations it forked) cost the host, once it has ended.
+  const ChildCost& cost() const { return cost_; }
 
 private:
   pid_t pid_ = -1;
   bool ended_ = false; // reaped by finished(), its exit status in status_
   int status_ = 0;
+  ChildCost cost_;
   int fd_ = -1;              // the child's error text, if it throws
   std::FILE* err_ = nullptr; // its standard error
 };

@@ -114,8 +114,7 @@ bool BackgroundPlots::wait() {
   if (pid_ <= 0) return false;
   if (!drawing_) kill(pid_, SIGTERM); // (an error before draw(): not worth its start-up)
   int status = 0;
-  while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
-  }
+  wait_child(pid_, &status, 0, &cost_);
   pid_ = 0;
   return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }

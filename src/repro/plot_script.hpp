@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "util/child_cost.hpp"
+
 namespace zc {
 
 // The interpreter: $ZCUBE_PYTHON when set, else Debian's /usr/bin/python3 where there is one (the
@@ -32,9 +34,12 @@ public:
   BackgroundPlots& operator=(const BackgroundPlots&) = delete;
   void draw(const std::vector<std::string>& args);
   bool wait();
+  // What the script cost the host, once waited for (its figures' processes included).
+  const ChildCost& cost() const { return cost_; }
 
 private:
   void say(const std::string& line);
+  ChildCost cost_;
   int pid_ = -1;
   int to_script_ = -1;
   bool drawing_ = false;

@@ -20,6 +20,7 @@
 #include "repro/progress.hpp"
 #include "repro/table.hpp"
 #include "run/batch.hpp"
+#include "util/child_cost.hpp"
 #include "util/error.hpp"
 #include "util/output_file.hpp"
 
@@ -172,6 +173,33 @@ void reproduce_calibration(const ReproduceOptions& o) {
   write_calibration_results(fit, o.out + "/calibration");
 }
 
+// What the simulations of a batch cost the host, from their reports (run/batch.hpp).
+ChildCost simulations_cost(const std::vector<nlohmann::json>& reps) {
+  ChildCost c;
+  for (const auto& r : reps) {
+    if (!r.contains("host")) continue;
+    const nlohmann::json& h = r["host"];
+    const double cpu = h.value("process_cpu_s", 0.0), kernel = h.value("process_kernel_s", 0.0);
+    c += {cpu - kernel, kernel, h.value("process_minor_faults", 0L)};
+  }
+  return c;
+}
+
+// Where the host's CPU went: the whole job (this process and every process it reaped), and its
+// parts; a part not run in a process of its own is in the whole only.
+std::string host_cost_line(std::size_t points, const ChildCost& sims, const ChildCost* calibration,
+                           const ChildCost* plots) {
+  ChildCost all = own_cost();
+  all += reaped_cost();
+  std::string s = "reproduce: host CPU " + fixed(all.cpu_s(), 1) + " s (" + fixed(all.system_s, 1) +
+                  " in the kernel): " + std::to_string(points) + " simulations " +
+                  fixed(sims.cpu_s(), 1) + " s (" + fixed(sims.system_s, 1) + " in the kernel, " +
+                  fixed(double(sims.minor_faults) * 1e-6, 2) + " M page faults)";
+  if (calibration) s += ", calibration " + fixed(calibration->cpu_s(), 1) + " s";
+  if (plots) s += ", plots " + fixed(plots->cpu_s(), 1) + " s";
+  return s + ", this process " + fixed(own_cost().cpu_s(), 1) + " s\n";
+}
+
 } // namespace
 
 std::string plan_directory(const ReproduceOptions& o, const PaperPlan& p, std::string* note) {
@@ -264,6 +292,7 @@ int reproduce(const ReproduceOptions& o) {
   };
   auto reps = o.runner ? o.runner(cfgs, o.jobs, progress) : simulate_batch(cfgs, o.jobs, on_point);
   if (!o.write) return 0;
+  const ChildCost sims_cost = simulations_cost(reps);
 
   int status = 0;
   std::size_t i = 0;
@@ -326,6 +355,10 @@ int reproduce(const ReproduceOptions& o) {
       std::cerr << "reproduce: plots not drawn (scripts/plot_results.py failed; it needs "
                    "python3-matplotlib, which scripts/setup.sh installs)\n";
   }
+  if (o.verbose)
+    std::cerr << host_cost_line(cfgs.size(), sims_cost,
+                                calibration ? &calibration->cost() : nullptr,
+                                plots ? &plots->cost() : nullptr);
   // The whole job's time, plots included.
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (o.verbose) std::cerr << "reproduce: wrote " << o.out << "/ in " << fixed(wall, 1) << " s\n";

@@ -18,6 +18,7 @@
 #include <string>
 #include <thread>
 
+#include "util/child_cost.hpp"
 #include "util/fork_pipe.hpp"
 #include "util/huge_pages.hpp"
 
@@ -84,16 +85,23 @@ std::size_t frame_end(const std::string& out) {
   return n <= out.size() - sizeof n ? sizeof n + std::size_t(n) : std::string::npos;
 }
 
-// The child's report, or why it gave none.
+// The child's report, or why it gave none. A report's host section gains what the whole process
+// cost the host (fork to exit: what the report's own wall time leaves out).
 nlohmann::json finish(Child& c) {
   close(c.fd);
   int status = 0;
-  while (waitpid(c.pid, &status, 0) < 0 && errno == EINTR) {
-  }
+  ChildCost cost;
+  wait_child(c.pid, &status, 0, &cost);
   if (const std::size_t end = frame_end(c.out); end != std::string::npos) {
     try {
-      return nlohmann::json::from_cbor(c.out.begin() + sizeof(FrameSize),
-                                       c.out.begin() + std::ptrdiff_t(end));
+      nlohmann::json rep = nlohmann::json::from_cbor(c.out.begin() + sizeof(FrameSize),
+                                                     c.out.begin() + std::ptrdiff_t(end));
+      if (rep.is_object() && rep.contains("host") && rep["host"].is_object()) {
+        rep["host"]["process_cpu_s"] = cost.cpu_s();
+        rep["host"]["process_kernel_s"] = cost.system_s;
+        rep["host"]["process_minor_faults"] = cost.minor_faults;
+      }
+      return rep;
     } catch (const std::exception&) {
     }
   }

@@ -49,3 +49,24 @@ TEST(Batch, AFailingPointDoesNotLoseTheOthers) {
   EXPECT_EQ(r[2]["status"], "error");
   EXPECT_EQ(calls, 3);
 }
+
+// A point's report tells what its whole process cost the host (fork to exit), as the kernel
+// accounts it: CPU time, the part of it in the kernel, and minor page faults.
+TEST(Batch, AReportCarriesItsProcesssHostCost) {
+  SimConfig c;
+  c.machine = "ipsc2";
+  c.nodes = 4;
+  c.algorithm = "elastic";
+  c.scene_path = kRoot + "/scenes/teapot.json";
+  c.width = c.height = 64;
+  const auto r = simulate_batch({c}, 1);
+  ASSERT_EQ(r.size(), 1u);
+  ASSERT_EQ(r[0]["status"], "ok");
+  const nlohmann::json& h = r[0]["host"];
+  ASSERT_TRUE(h.contains("process_cpu_s") && h.contains("process_kernel_s") &&
+              h.contains("process_minor_faults"));
+  EXPECT_GE(h["process_kernel_s"].get<double>(), 0.0);
+  EXPECT_LE(h["process_kernel_s"].get<double>(), h["process_cpu_s"].get<double>());
+  // A forked process writes to at least one page of its own (its stack, its report).
+  EXPECT_GT(h["process_minor_faults"].get<long>(), 0);
+}
