@@ -27,15 +27,21 @@ const std::string kRoot = ZCUBE_SOURCE_DIR;
 
 using test::read_csv;
 
+// An elastic run of the teapot at 64x64.
+SimConfig small_elastic(int nodes) {
+  SimConfig c;
+  c.machine = "ipsc2";
+  c.nodes = nodes;
+  c.algorithm = "elastic";
+  c.scene_path = kRoot + "/scenes/teapot.json";
+  c.width = c.height = 64;
+  return c;
+}
+
 } // namespace
 
 TEST(Batch, AFailingPointDoesNotLoseTheOthers) {
-  SimConfig good;
-  good.machine = "ipsc2";
-  good.nodes = 2;
-  good.algorithm = "elastic";
-  good.scene_path = kRoot + "/scenes/teapot.json";
-  good.width = good.height = 64;
+  const SimConfig good = small_elastic(2);
   SimConfig missing = good;
   missing.scene_path = kRoot + "/no/such/scene.json";
   int calls = 0;
@@ -53,13 +59,7 @@ TEST(Batch, AFailingPointDoesNotLoseTheOthers) {
 // A point's report tells what its whole process cost the host (fork to exit), as the kernel
 // accounts it: CPU time, the part of it in the kernel, and minor page faults.
 TEST(Batch, AReportCarriesItsProcesssHostCost) {
-  SimConfig c;
-  c.machine = "ipsc2";
-  c.nodes = 4;
-  c.algorithm = "elastic";
-  c.scene_path = kRoot + "/scenes/teapot.json";
-  c.width = c.height = 64;
-  const auto r = simulate_batch({c}, 1);
+  const auto r = simulate_batch({small_elastic(4)}, 1);
   ASSERT_EQ(r.size(), 1u);
   ASSERT_EQ(r[0]["status"], "ok");
   const nlohmann::json& h = r[0]["host"];
