@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 
+#include "machine/clock_limits.hpp"
 #include "machine/machine.hpp"
 #include "machine/units.hpp"
 #include "util/error.hpp"
@@ -32,9 +33,7 @@ const std::vector<std::string>& run_flag_names() {
 
 namespace {
 
-constexpr double kMaxWhatIfDelay_s = 3600;      // --latency, --per-hop, --host-latency
-constexpr double kMinWhatIfBandwidth_Bps = 1.0; // --bandwidth, --host-bandwidth
-constexpr int kMaxFrames = 10000;               // --frames
+constexpr int kMaxFrames = 10000; // --frames
 
 int parse_int(const std::string& s, const std::string& flag) {
   std::size_t used = 0;
@@ -57,9 +56,8 @@ double parse_positive(const std::string& s, const std::string& flag) {
   return v;
 }
 
-// What-ifs beyond these magnitudes push the virtual clock past 2^52 ns, where a double no longer
-// resolves the simulated CPU's nanoseconds (a 1e300 s latency made every compute phase 0 s; the
-// run also fails then, sim/simulation.cpp). Physical machines sit far inside them.
+// What-ifs beyond the clock's bounds (machine/clock_limits.hpp; the run also fails then,
+// sim/simulation.cpp).
 const char* const kClockWhy = ": slower costs push the simulated clock (a double) past 2^52 ns, "
                               "where compute times are rounded";
 
@@ -68,7 +66,7 @@ std::optional<double> delay_flag(const std::map<std::string, std::string>& v,
                                  const std::string& flag) {
   if (!v.count(flag)) return std::nullopt;
   const double s = parse_time(v.at(flag), "--" + flag, Unit::Required);
-  if (s > kMaxWhatIfDelay_s)
+  if (s > kMaxDelay_s)
     throw UsageError("--" + flag + " '" + v.at(flag) + "': above 1 h" + kClockWhy);
   return s;
 }
@@ -78,7 +76,7 @@ std::optional<double> rate_flag(const std::map<std::string, std::string>& v,
                                 const std::string& flag) {
   if (!v.count(flag)) return std::nullopt;
   const double bps = parse_bandwidth(v.at(flag), "--" + flag, Unit::Required);
-  if (bps < kMinWhatIfBandwidth_Bps)
+  if (bps < kMinBandwidth_Bps)
     throw UsageError("--" + flag + " '" + v.at(flag) + "': below 1 Bps" + kClockWhy);
   return bps;
 }

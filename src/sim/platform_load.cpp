@@ -17,6 +17,7 @@
 
 #include <xbt/config.hpp>
 
+#include "machine/clock_limits.hpp"
 #include "machine/platform_xml.hpp"
 #include "machine/units.hpp"
 #include "sim/platform_routes.hpp"
@@ -234,11 +235,7 @@ double checked(double v, const std::string& where, const std::string& what, doub
   return v;
 }
 
-// Beyond these figures the simulated clock (a double) passes 2^52 ns, where it no longer resolves
-// a nanosecond and compute times are rounded: the bounds of the what-if flags (run/run_flags.cpp).
-constexpr double kMaxDelay_s = 3600;
-constexpr double kMinBandwidth_Bps = 1;
-
+// A link's figures within the clock's bounds (machine/clock_limits.hpp).
 double clock_safe_delay(double v, const std::string& where, const std::string& what) {
   if (v > kMaxDelay_s)
     throw InputError(where, 0,
