@@ -219,9 +219,8 @@ std::size_t Framebuffer::merge_locations(const std::uint8_t* msg, std::size_t si
   // Depths and ids read in place (unaligned loads), not copied out into arrays of their own first.
   const std::uint8_t* zs = msg + 3 * n;
   const std::uint8_t* ids = msg + 7 * n;
-  const std::size_t W = std::size_t(width_);
   for (std::size_t k = 0; k < n;) {
-    const std::size_t to = std::min(n, ((first + k) / W + 1) * W - first);
+    const std::size_t to = row_run_end(first, k, n);
     merge_row(msg + 3 * k, zs + 4 * k, ids + 4 * k, to - k, first + k);
     k = to;
   }
@@ -233,10 +232,9 @@ std::size_t Framebuffer::merge_locations(const RunBytes& msg, std::size_t at, st
   const std::size_t n = size / kLocationBytes;
   if (size % kLocationBytes != 0 || first + n > ids_.size() || at + size > msg.size())
     throw std::runtime_error("Framebuffer::merge_locations: message does not fit the buffer");
-  const std::size_t W = std::size_t(width_);
   std::vector<std::uint8_t> row; // a row whose planes are not all written runs, written out
   for (std::size_t k = 0; k < n;) {
-    const std::size_t to = std::min(n, ((first + k) / W + 1) * W - first), m = to - k;
+    const std::size_t to = row_run_end(first, k, n), m = to - k;
     const std::size_t rgb_at = at + 3 * k, zs_at = at + 3 * n + 4 * k, ids_at = at + 7 * n + 4 * k;
     if (msg.is_fill_of(ids_at, 4 * m, 0xff)) { // uncovered: never in front
       k = to;

@@ -3,6 +3,7 @@
 // decompositions) or every P-th row (Blazek's interleaved lines). Each pixel keeps its colour, its
 // depth and the id of the triangle that wrote it: depth ties go to the lower id, which makes the
 // final image independent of submission order and of any partition of the work.
+#include <algorithm>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -156,6 +157,12 @@ private:
   template <class Data, class Fill>
   void for_each_location_run(std::size_t first, std::size_t n, Data data, Fill fill) const;
   // Z-buffers m locations from index `at` (one row or part of one) given by their three planes.
+  // Where the run of locations that starts k after location `first` leaves its row: k plus the
+  // locations to the row's end, at most n (merge_locations walks a message row by row).
+  std::size_t row_run_end(std::size_t first, std::size_t k, std::size_t n) const {
+    const std::size_t W = std::size_t(width_);
+    return std::min(n, ((first + k) / W + 1) * W - first);
+  }
   void merge_row(const std::uint8_t* rgb, const std::uint8_t* zs, const std::uint8_t* ids,
                  std::size_t m, std::size_t at);
   void ready_local_const(int r) const {
