@@ -66,6 +66,21 @@ def reproduce_stages(lines, wall):
     return [("simulations_s", done), ("calibration_s", plots - done), ("plots_after_s", wall - plots)]
 
 
+def host_cost_figures(lines):
+    """The host's CPU by part, as reproduce's last lines give it (binaries that print them):
+    the simulations (and their kernel time), the calibration, the plots and reproduce itself."""
+    pattern = (r"host CPU ([\d.]+) s \(([\d.]+) in the kernel\): \d+ simulations ([\d.]+) s "
+               r"\(([\d.]+) in the kernel, [\d.]+ M page faults\)(?:, calibration ([\d.]+) s)?"
+               r"(?:, plots ([\d.]+) s)?, this process ([\d.]+) s")
+    names = ("host_cpu_s", "host_kernel_s", "simulations_cpu_s", "simulations_kernel_s",
+             "calibration_cpu_s", "plots_cpu_s", "parent_cpu_s")
+    for _, line in lines:
+        m = re.search(pattern, line)
+        if m:
+            return [(n, float(v)) for n, v in zip(names, m.groups()) if v is not None]
+    return []
+
+
 def same_tree(a, b):
     """1 when every file under a and b is equal (host_cost.csv, the host's times, excepted)."""
     def files(d):
@@ -99,7 +114,8 @@ def cases(tmp):
         w, ru, lines = timed_stages([z, "reproduce", "--out", out])
         return [("wall_s", w), ("peak_mib", ru.ru_maxrss / 1024),
                 ("cpu_s", ru.ru_utime + ru.ru_stime), ("user_s", ru.ru_utime),
-                ("sys_s", ru.ru_stime), ("minor_faults", ru.ru_minflt)] + reproduce_stages(lines, w)
+                ("sys_s", ru.ru_stime), ("minor_faults", ru.ru_minflt)] + \
+            reproduce_stages(lines, w) + host_cost_figures(lines)
 
     png = os.path.join(tmp, "bone.png")
     return {
@@ -194,7 +210,7 @@ def main():
                 this = got[a.zcube][k]
                 row = {"case": name, "figure": k, "runs": len(this),
                        "median": statistics.median(this), "min": min(this), "max": max(this)}
-                if a.before:
+                if a.before and k in got[a.before]:  # (an older binary may not give it)
                     old = got[a.before][k]
                     ratios = [x / y for x, y in zip(this, old) if y > 0]
                     row.update({"before_median": statistics.median(old),
