@@ -156,13 +156,13 @@ private:
   // [first, first + n): the walk of pack_locations and pack_location_runs.
   template <class Data, class Fill>
   void for_each_location_run(std::size_t first, std::size_t n, Data data, Fill fill) const;
-  // Z-buffers m locations from index `at` (one row or part of one) given by their three planes.
   // Where the run of locations that starts k after location `first` leaves its row: k plus the
   // locations to the row's end, at most n (merge_locations walks a message row by row).
   std::size_t row_run_end(std::size_t first, std::size_t k, std::size_t n) const {
     const std::size_t W = std::size_t(width_);
     return std::min(n, ((first + k) / W + 1) * W - first);
   }
+  // Z-buffers m locations from index `at` (one row or part of one) given by their three planes.
   void merge_row(const std::uint8_t* rgb, const std::uint8_t* zs, const std::uint8_t* ids,
                  std::size_t m, std::size_t at);
   void ready_local_const(int r) const {

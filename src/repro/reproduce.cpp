@@ -173,31 +173,41 @@ void reproduce_calibration(const ReproduceOptions& o) {
   write_calibration_results(fit, o.out + "/calibration");
 }
 
-// What the simulations of a batch cost the host, from their reports (run/batch.hpp).
-ChildCost simulations_cost(const std::vector<nlohmann::json>& reps) {
-  ChildCost c;
+// What the simulations of a batch cost the host, from the reports of those that ran in processes
+// of their own (run/batch.hpp; not those of another backend, such as MPI ranks).
+struct SimulationsCost {
+  ChildCost cost;
+  std::size_t processes = 0;
+};
+SimulationsCost simulations_cost(const std::vector<nlohmann::json>& reps) {
+  SimulationsCost c;
   for (const auto& r : reps) {
-    if (!r.contains("host")) continue;
+    if (!r.contains("host") || !r["host"].contains("process_cpu_s")) continue;
     const nlohmann::json& h = r["host"];
     const double cpu = h.value("process_cpu_s", 0.0), kernel = h.value("process_kernel_s", 0.0);
-    c += {cpu - kernel, kernel, h.value("process_minor_faults", 0L)};
+    c.cost += {cpu - kernel, kernel, h.value("process_minor_faults", 0L)};
+    ++c.processes;
   }
   return c;
 }
 
 // Where the host's CPU went: the whole job (this process and every process it reaped), and its
 // parts; a part not run in a process of its own is in the whole only.
-std::string host_cost_line(std::size_t points, const ChildCost& sims, const ChildCost* calibration,
+std::string host_cost_line(const SimulationsCost& sims, const ChildCost* calibration,
                            const ChildCost* plots) {
   ChildCost all = own_cost();
   all += reaped_cost();
   std::string s = "reproduce: host CPU " + fixed(all.cpu_s(), 1) + " s (" + fixed(all.system_s, 1) +
-                  " in the kernel): " + std::to_string(points) + " simulations " +
-                  fixed(sims.cpu_s(), 1) + " s (" + fixed(sims.system_s, 1) + " in the kernel, " +
-                  fixed(double(sims.minor_faults) * 1e-6, 2) + " M page faults)";
-  if (calibration) s += ", calibration " + fixed(calibration->cpu_s(), 1) + " s";
-  if (plots) s += ", plots " + fixed(plots->cpu_s(), 1) + " s";
-  return s + ", this process " + fixed(own_cost().cpu_s(), 1) + " s\n";
+                  " in the kernel)";
+  const ChildCost& c = sims.cost;
+  if (sims.processes > 0)
+    s += ": " + std::to_string(sims.processes) + " simulations " + fixed(c.cpu_s(), 1) + " s (" +
+         fixed(c.system_s, 1) + " in the kernel, " + fixed(double(c.minor_faults) * 1e-6, 2) +
+         " M page faults)";
+  s += sims.processes > 0 ? "," : ":";
+  if (calibration) s += " calibration " + fixed(calibration->cpu_s(), 1) + " s,";
+  if (plots) s += " plots " + fixed(plots->cpu_s(), 1) + " s,";
+  return s + " this process " + fixed(own_cost().cpu_s(), 1) + " s\n";
 }
 
 } // namespace
@@ -292,7 +302,7 @@ int reproduce(const ReproduceOptions& o) {
   };
   auto reps = o.runner ? o.runner(cfgs, o.jobs, progress) : simulate_batch(cfgs, o.jobs, on_point);
   if (!o.write) return 0;
-  const ChildCost sims_cost = simulations_cost(reps);
+  const SimulationsCost sims_cost = simulations_cost(reps);
 
   int status = 0;
   std::size_t i = 0;
@@ -356,8 +366,7 @@ int reproduce(const ReproduceOptions& o) {
                    "python3-matplotlib, which scripts/setup.sh installs)\n";
   }
   if (o.verbose)
-    std::cerr << host_cost_line(cfgs.size(), sims_cost,
-                                calibration ? &calibration->cost() : nullptr,
+    std::cerr << host_cost_line(sims_cost, calibration ? &calibration->cost() : nullptr,
                                 plots ? &plots->cost() : nullptr);
   // The whole job's time, plots included.
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
