@@ -79,7 +79,7 @@ bool ProjectedMesh::rows(const NodeRenderer& nr, std::uint32_t t, int& y0, int& 
       extents_[i] = vertex_extent(pv[i], nr.height());
   }
   const VertexExtent* ep[3] = {&extents_[tr.v[0]], &extents_[tr.v[1]], &extents_[tr.v[2]]};
-  return nr.rows(mesh.tris[t].id, pp, ep, y0, y1);
+  return row_extent(pp, ep, nr.height(), y0, y1);
 }
 
 } // namespace zc::blazek

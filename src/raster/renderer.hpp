@@ -56,13 +56,6 @@ public:
     if (setup_cache_) return cached_rows(id, p, y0, y1);
     return row_extent(p, view_.width, view_.height, y0, y1);
   }
-  // The same from the corners' extents as well, e[k] = vertex_extent(*p[k], height()), worked out
-  // once for the triangles sharing a vertex (used when no set-up cache answers).
-  bool rows(std::uint32_t id, const ProjectedVertex* const p[3], const VertexExtent* const e[3],
-            int& y0, int& y1) const {
-    if (setup_cache_) return cached_rows(id, p, y0, y1);
-    return row_extent(p, e, view_.height, y0, y1);
-  }
   bool has_setup_cache() const { return setup_cache_ != nullptr; }
 
   Framebuffer make_framebuffer(const RowSet& rows) const {

@@ -195,7 +195,8 @@ SimulationsCost simulations_cost(const std::vector<nlohmann::json>& reps) {
 // parts; a part not run in a process of its own is in the whole only.
 std::string host_cost_line(const SimulationsCost& sims, const ChildCost* calibration,
                            const ChildCost* plots) {
-  ChildCost all = own_cost();
+  const ChildCost self = own_cost();
+  ChildCost all = self;
   all += reaped_cost();
   std::string s = "reproduce: host CPU " + fixed(all.cpu_s(), 1) + " s (" + fixed(all.system_s, 1) +
                   " in the kernel)";
@@ -207,7 +208,7 @@ std::string host_cost_line(const SimulationsCost& sims, const ChildCost* calibra
   s += sims.processes > 0 ? "," : ":";
   if (calibration) s += " calibration " + fixed(calibration->cpu_s(), 1) + " s,";
   if (plots) s += " plots " + fixed(plots->cpu_s(), 1) + " s,";
-  return s + " this process " + fixed(own_cost().cpu_s(), 1) + " s\n";
+  return s + " this process " + fixed(self.cpu_s(), 1) + " s\n";
 }
 
 } // namespace

@@ -48,12 +48,24 @@ Kind check_against_setup(const ProjectedVertex* const v[3], int W, int H, bool a
   return Kind::Inside;
 }
 
+// How many triangles of each kind a test saw: each kind must be well represented, or the test
+// would not test it.
+struct Tally {
+  int count[3] = {};
+  void add(Kind k) { ++count[int(k)]; }
+  void expect_at_least(int inside, int cut, int outside) const {
+    EXPECT_GT(count[int(Kind::Inside)], inside);
+    EXPECT_GT(count[int(Kind::Cut)], cut);
+    EXPECT_GT(count[int(Kind::Outside)], outside);
+  }
+};
+
 } // namespace
 
 TEST(RowExtent, MatchesSetUpInsideWholeScreenWhenCutNoneOutside) {
   std::mt19937 rng(12345);
   const int W = 97, H = 61;
-  int count[3] = {};
+  Tally tally;
   for (int n = 0; n < 20000; ++n) {
     // Small spreads keep most triangles inside; large ones cross the near, far and guard planes.
     const float spread = n % 4 == 0 ? 8.0f : 0.9f;
@@ -61,11 +73,9 @@ TEST(RowExtent, MatchesSetUpInsideWholeScreenWhenCutNoneOutside) {
     const ProjectedVertex* const v[3] = {&a, &b, &c};
     int y0 = -7, y1 = -7;
     const bool any = row_extent(v, W, H, y0, y1);
-    ++count[int(check_against_setup(v, W, H, any, y0, y1, n))];
+    tally.add(check_against_setup(v, W, H, any, y0, y1, n));
   }
-  EXPECT_GT(count[int(Kind::Inside)], 5000);
-  EXPECT_GT(count[int(Kind::Cut)], 500);
-  EXPECT_GT(count[int(Kind::Outside)], 100);
+  tally.expect_at_least(5000, 500, 100);
 }
 
 // A mesh's vertices shared by many triangles, each vertex's extent worked out once (as Blazek's
@@ -86,7 +96,7 @@ TEST(RowExtent, FromSharedVertexExtentsMatchesSetUp) {
   for (const ProjectedVertex& p : pool)
     ext.push_back(vertex_extent(p, H));
   std::uniform_int_distribution<std::size_t> pick(0, pool.size() - 1);
-  int count[3] = {};
+  Tally tally;
   for (int n = 0; n < 20000; ++n) {
     // Every fourth triangle takes a corner among the special vertices.
     const std::size_t i = n % 4 == 0 ? pool.size() - 1 - std::size_t(n / 4 % 4) : pick(rng);
@@ -95,9 +105,7 @@ TEST(RowExtent, FromSharedVertexExtentsMatchesSetUp) {
     const VertexExtent* const e[3] = {&ext[i], &ext[j], &ext[k]};
     int y0 = -7, y1 = -7;
     const bool any = row_extent(v, e, H, y0, y1);
-    ++count[int(check_against_setup(v, W, H, any, y0, y1, n))];
+    tally.add(check_against_setup(v, W, H, any, y0, y1, n));
   }
-  EXPECT_GT(count[int(Kind::Inside)], 3000);
-  EXPECT_GT(count[int(Kind::Cut)], 500);
-  EXPECT_GT(count[int(Kind::Outside)], 100);
+  tally.expect_at_least(3000, 500, 100);
 }
