@@ -9,12 +9,14 @@
 #include "cli/paths.hpp"
 #include "cli/sim_options.hpp"
 #include "raster/image_io.hpp"
+#include "repro/band_text.hpp"
 #include "repro/gantt_chart.hpp"
 #include "repro/paper_figures.hpp"
 #include "repro/reproduce.hpp"
 #include "repro/simulate.hpp"
 #include "run/run_flags.hpp"
 #include "scene/load.hpp"
+#include "sim/bands.hpp"
 #include "sim/simgrid_args.hpp"
 #include "trace/trace_file.hpp"
 #include "util/error.hpp"
@@ -75,9 +77,13 @@ static int finish(const SimResult& r, const std::string& report, const std::stri
             << j["virtual_time_s"].get<double>() << " s\n";
   if (j.contains("timed_s")) // what the speed-ups divide (docs/papers.md)
     std::cout << "  timed region (the paper's)   " << j["timed_s"].get<double>() << " s\n";
-  for (const auto& p : j["phases"])
+  for (const auto& p : j["phases"]) {
     std::cout << "  " << std::left << std::setw(28) << p["name"].get<std::string>() << " max "
-              << p["max_s"].get<double>() << " s\n";
+              << p["max_s"].get<double>() << " s";
+    if (p.contains("bands")) std::cout << "  " << band_text(p["bands"]);
+    std::cout << "\n";
+  }
+  std::cout << bands_and_sensitivity_text(j);
   if (j.contains("paper"))
     for (const auto& f : j["paper"]) {
       std::cout << (f.value("what_if", false) ? "paper (what-ifs in force, not its machine): "
@@ -147,6 +153,18 @@ static int cmd_run(std::vector<std::string> args) {
   app.add_option("--trace", tl.trace,
                  "write the run's timeline: FILE.json (Chrome/Perfetto) or FILE.trace (Paje)");
   app.add_option("--gantt", tl.gantt, "draw a space-time diagram of the run: FILE.png|.svg|.pdf");
+  BandsRequest bands;
+  app.add_option("--bands", bands.draws,
+                 "N draws of the uncertainty model (docs/uncertainty.md): p05, p50 and p95 of "
+                 "every time in the report")
+      ->check(CLI::Range(0, 100000));
+  app.add_option("--bands-seed", bands.seed, "the draws' seed (the same draws for every run)")
+      ->capture_default_str();
+  std::string sensitivity_plot;
+  app.add_flag("--sensitivity", bands.sensitivity,
+               "elasticity d ln T / d ln theta of every model parameter; prints the five largest");
+  app.add_option("--sensitivity-plot", sensitivity_plot,
+                 "draw the elasticities of the timed region as a tornado plot: FILE.png|.svg|.pdf");
   bool list = false;
   app.add_flag("--list", list, "list the algorithms and exit");
   if (int rc = parse(app, args); rc >= 0) return rc;
@@ -158,7 +176,12 @@ static int cmd_run(std::vector<std::string> args) {
     return 0;
   }
   // Every output before the simulation, not after it: writable, not a directory, each its own file.
-  check_output_paths({{"--report", report},
+  if (!sensitivity_plot.empty()) {
+    check_tornado_path(sensitivity_plot);
+    bands.sensitivity = true;
+  }
+  check_output_paths({{"--sensitivity-plot", sensitivity_plot},
+                      {"--report", report},
                       {"--image", image},
                       {"--depth", depth},
                       {"--trace", tl.trace},
@@ -205,8 +228,17 @@ static int cmd_run(std::vector<std::string> args) {
     const auto sr = run_simulation_isolated(seq);
     if (sr.value("status", "") == "ok") seq_s = virtual_s(sr);
   }
-  SimResult r = run_simulation(cfg);
+  if ((bands.draws > 0 || bands.sensitivity) && backend == "mpi")
+    throw UsageError("--bands, --sensitivity: the MPI backend measures; it has no model to draw");
+  SimResult r =
+      bands.draws > 0 || bands.sensitivity ? run_with_bands(cfg, bands) : run_simulation(cfg);
   attach_paper_figures(r.report);
+  if (r.ok && !sensitivity_plot.empty() &&
+      !draw_tornado(r.report, sensitivity_plot, source_root())) {
+    std::cerr << "zcube: error: --sensitivity-plot " << sensitivity_plot
+              << ": scripts/plot_tornado.py failed\n";
+    return 1;
+  }
   if (r.ok && seq_s) r.report["paper"] = paper_figures_for(r.report, seq_s);
   return finish(r, report, image, depth, tl);
 }

@@ -7,13 +7,27 @@ inline constexpr bool kFitted = true;
 // The groups kept at their physical estimate (the fewest free parameters the cross-validation
 // supports: results/calibration/selection.csv).
 inline constexpr const char* kFixedGroups = "packing,spans,scanline,clear";
-inline constexpr double kGroupScale[] = {
-    1.320787028706451 /* geometry */,
-    1 /* spans */,
-    1.649885874853264 /* pixels */,
-    1 /* clear */,
-    1.5680663706146993 /* merge */,
-    1 /* packing */,
-    2 /* list_merge */,
-    1 /* scanline */};
+inline constexpr double kGroupScale[] = {1.320787028706451 /* geometry */,
+                                         1 /* spans */,
+                                         1.649885874853264 /* pixels */,
+                                         1 /* clear */,
+                                         1.5680663706146993 /* merge */,
+                                         1 /* packing */,
+                                         2 /* list_merge */,
+                                         1 /* scanline */};
+// The leave-one-scene-out folds' multipliers (results/calibration/crossval.csv), the fitted
+// multipliers' spread in the uncertainty model (docs/uncertainty.md).
+inline constexpr double kFoldScale[][8] = {
+    {1.290055404573032, 1, 1.619601196127086, 1, 1.5652447620066803, 1, 2, 1} /* 1pot */,
+    {1.3603122422025846, 1, 1.6675618093230247, 1, 1.5755695745664289, 1, 2, 1} /* 2pot */,
+    {1.328267429502934, 1, 1.6443508383353802, 1, 1.5747609493191144, 1, 2, 1} /* 4pot_1 */,
+    {1.3078182537866467, 1, 1.642955546157981, 1, 1.5689008839450926, 1, 2, 1} /* 4pot_2 */,
+    {1.3189718306438662, 1, 1.692801685334985, 1, 1.5552048852283196, 1, 2, 1} /* 8pot_1 */,
+    {1.323046798086384, 1, 1.635894266129771, 1, 1.568749418152625, 1, 2, 1} /* 8pot_2 */,
+};
+// Root mean square of the folds' log errors by phase (the structural error), all phases last.
+inline constexpr const char* kResidualPhases[] = {"local_zbuffer", "pixel_merging",
+                                                  "span_list_creation"};
+inline constexpr double kResidualRms[] = {0.07923716659758287, 0.09951988264140922,
+                                          0.09305725960510712, 0.0909988812689205};
 } // namespace zc::calibrated

@@ -14,6 +14,47 @@
 
 namespace zc {
 
+namespace {
+
+// The folds' multipliers and the root mean square of their log errors by phase: what the
+// uncertainty model (machine/uncertainty.hpp) draws the fit's spread and the structural error from.
+void write_spread(std::ostream& h, const nlohmann::json& fit) {
+  h << "// The leave-one-scene-out folds' multipliers (results/calibration/crossval.csv), the "
+       "fitted\n// multipliers' spread in the uncertainty model (docs/uncertainty.md).\n"
+    << "inline constexpr double kFoldScale[][" << fit["scale"].size() << "] = {";
+  std::map<std::string, std::vector<double>> by_phase;
+  std::vector<double> all;
+  for (const auto& f : fit["crossval"]["folds"]) {
+    h << "\n    {";
+    for (std::size_t g = 0; g < f["scale"].size(); ++g)
+      h << (g ? ", " : "") << format_double(f["scale"][g].get<double>());
+    h << "} /* " << f["fold"].get<std::string>() << " */,";
+    for (const auto& t : f["targets"]) {
+      const std::string id = t["id"];
+      const double r = std::log(t["predicted_ms"].get<double>() / t["paper_ms"].get<double>());
+      by_phase[id.substr(id.rfind('/') + 1)].push_back(r);
+      all.push_back(r);
+    }
+  }
+  const auto rms = [](const std::vector<double>& v) {
+    double s = 0;
+    for (double x : v)
+      s += x * x;
+    return v.empty() ? 0.0 : std::sqrt(s / double(v.size()));
+  };
+  h << "};\n// Root mean square of the folds' log errors by phase (the structural error), all "
+       "phases last.\ninline constexpr const char* kResidualPhases[] = {";
+  std::string rms_list;
+  for (const auto& [name, v] : by_phase) {
+    h << (rms_list.empty() ? "" : ", ") << '"' << name << '"';
+    rms_list += format_double(rms(v)) + ", ";
+  }
+  h << "};\ninline constexpr double kResidualRms[] = {" << rms_list << format_double(rms(all))
+    << "};\n";
+}
+
+} // namespace
+
 std::string calibrated_costs_header(const nlohmann::json& fit) {
   std::ostringstream h;
   h << "#pragma once\n"
@@ -41,7 +82,9 @@ std::string calibrated_costs_header(const nlohmann::json& fit) {
   for (std::size_t g = 0; g < k.size(); ++g)
     h << (g ? "," : "") << "\n    " << format_double(k[g].get<double>()) << " /* "
       << fit["groups"][g]["name"].get<std::string>() << " */";
-  h << "};\n} // namespace zc::calibrated\n";
+  h << "};\n";
+  write_spread(h, fit);
+  h << "} // namespace zc::calibrated\n";
   return h.str();
 }
 

@@ -11,6 +11,7 @@
 
 #include "algo/algorithm.hpp"
 #include "machine/topology.hpp"
+#include "machine/uncertainty.hpp"
 #include "raster/framebuffer.hpp"
 #include "run/fidelity.hpp"
 
@@ -42,6 +43,9 @@ struct SimConfig {
   // Passed to SimGrid after zcube's own settings, so they win: "--cfg=name:value", "--log=...".
   std::vector<std::string> simgrid_args;
   bool timeline = false; // record every node's events (the report's "timeline"; --trace, --gantt)
+  // One draw of the uncertainty model (machine/uncertainty.hpp) priced on top of the machine and
+  // its what-ifs; null: the nominal machine.
+  std::shared_ptr<const ModelDraw> draw;
 };
 
 struct SimResult {

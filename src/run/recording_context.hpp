@@ -47,6 +47,11 @@ public:
 protected:
   // The cost of charged work on this backend.
   virtual void spend(const Counters& work) = 0;
+  // The innermost open phase ("" outside every phase).
+  const std::string& current_phase() const {
+    static const std::string none;
+    return open_.empty() ? none : open_.back().first;
+  }
   NodeStats& stats() const { return stats_; }
 
 private:

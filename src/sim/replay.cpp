@@ -189,12 +189,12 @@ Algorithm replaying_algorithm(const Algorithm& a, const std::shared_ptr<const Ca
 } // namespace
 
 SimResult record_simulation(const SimConfig& cfg, const Scene* preloaded,
-                            std::shared_ptr<CallTrace>& trace) {
+                            std::shared_ptr<CallTrace>& trace, PlatformModel* model) {
   trace = std::make_shared<CallTrace>();
   SimConfig c = cfg;
   c.custom = std::make_shared<const Algorithm>(
       recording_algorithm(cfg.custom ? *cfg.custom : find_algorithm(cfg.algorithm), trace));
-  SimResult r = run_simulation(c, preloaded);
+  SimResult r = run_simulation(c, preloaded, model);
   if (!r.ok || trace->read_clock)
     trace = nullptr;
   else

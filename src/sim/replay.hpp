@@ -15,10 +15,13 @@
 
 namespace zc {
 
+struct PlatformModel;
+
 // A full run (run_simulation) that records its calls into `trace`; `trace` is reset when the run
 // cannot be replayed (it failed, or a node read the clock).
+// `model`, when given, receives the machine the run was priced on.
 SimResult record_simulation(const SimConfig& cfg, const Scene* preloaded,
-                            std::shared_ptr<CallTrace>& trace);
+                            std::shared_ptr<CallTrace>& trace, PlatformModel* model = nullptr);
 
 // The result of `cfg` by replaying `trace` (recorded from a run of the same algorithm, options,
 // scene, size, frames, node count and topology); nullopt, and `why`, when the replay diverged.

@@ -3,7 +3,7 @@
 namespace zc {
 
 void SimContext::spend(const Counters& w) {
-  const double s = cost_.seconds(w);
+  const double s = cost_.seconds(w) * (draw_ ? draw_->phase(current_phase()) : 1.0);
   if (s > 0) {
     const double t0 = delivery_.now();
     delivery_.compute(rank_, s);

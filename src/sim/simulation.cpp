@@ -80,9 +80,18 @@ void keep_stacks_on_fresh_pages() {
   mallopt(M_TRIM_THRESHOLD, int(std::min(2 * stack, 64L << 20)));
 }
 
+// The machine under one draw of the uncertainty model: every node's costs, the network, the node
+// operating system's share.
+void apply_model_draw(const ModelDraw& d, PlatformModel& pm) {
+  pm.net = apply_draw(pm.net, d);
+  for (CostTable& c : pm.cost)
+    c = apply_draw(c, d);
+  pm.os_resident *= d.os_resident;
+}
+
 } // namespace
 
-SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
+SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformModel* model) {
   const auto wall0 = std::chrono::steady_clock::now();
   const Algorithm& algo = cfg.custom ? *cfg.custom : find_algorithm(cfg.algorithm);
   AlgorithmOptions options = cfg.options;
@@ -151,6 +160,8 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
     throw UsageError("--nodes " + std::to_string(cfg.nodes) + " but " + platform_label +
                      " models " + std::to_string(pm.nodes) + " nodes");
   apply_overrides(cfg.overrides, pm, e);
+  if (cfg.draw) apply_model_draw(*cfg.draw, pm);
+  if (model) *model = pm;
   const int P = pm.nodes;
   if (algo.check_nodes) algo.check_nodes(options, P);
 
@@ -175,7 +186,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
     const CostTable cost = r < P ? pm.cost[r] : pm.cost[0];
     const double mem = r < P ? pm.memory[r] : 0.0; // the host computer is not memory-bound
     ctxs.push_back(std::make_unique<SimContext>(*comms[r], stats[r], scene, facts, options, cost,
-                                                mem, images));
+                                                mem, images, cfg.draw.get()));
   }
 
   std::string failure;

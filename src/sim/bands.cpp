@@ -1,0 +1,250 @@
+#include "sim/bands.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "machine/machine.hpp"
+#include "run/batch.hpp"
+#include "sim/platform_load.hpp"
+#include "sim/replay.hpp"
+#include "sim/retime.hpp"
+#include "sim/simulation.hpp"
+
+namespace zc {
+
+namespace {
+
+// The figures a band is given for, from a report or a retimed run.
+struct Figures {
+  bool ok = false;
+  double virtual_time_s = 0, timed_s = -1;
+  std::map<std::string, double> phases; // max_s
+};
+
+Figures figures_of(const RetimedRun& r) {
+  Figures f;
+  f.ok = r.status == RetimedRun::Status::Ok;
+  f.virtual_time_s = r.virtual_time_s;
+  f.timed_s = r.timed_s;
+  for (std::size_t i = 0; i < r.phase_names.size(); ++i)
+    f.phases[r.phase_names[i]] = r.phase_max_s[i];
+  return f;
+}
+
+Figures figures_of(const nlohmann::json& j) {
+  Figures f;
+  f.ok = j.value("status", "") == "ok";
+  if (!f.ok) return f;
+  f.virtual_time_s = j.at("virtual_time_s").get<double>();
+  f.timed_s = j.value("timed_s", -1.0);
+  for (const auto& p : j.at("phases"))
+    f.phases[p.at("name").get<std::string>()] = p.at("max_s").get<double>();
+  return f;
+}
+
+// The largest relative difference between two sets of figures (the retimer against the run).
+double disagreement(const Figures& a, const Figures& b) {
+  const auto rel = [](double x, double y) {
+    return std::abs(x - y) / std::max({std::abs(x), std::abs(y), 1e-300});
+  };
+  double d = rel(a.virtual_time_s, b.virtual_time_s);
+  if ((a.timed_s < 0) != (b.timed_s < 0)) return 1;
+  if (a.timed_s >= 0) d = std::max(d, rel(a.timed_s, b.timed_s));
+  if (a.phases.size() != b.phases.size()) return 1;
+  for (const auto& [name, v] : a.phases) {
+    auto it = b.phases.find(name);
+    if (it == b.phases.end()) return 1;
+    d = std::max(d, rel(v, it->second));
+  }
+  return d;
+}
+
+RetimeMachine retime_machine(const PlatformModel& pm, const SimConfig& cfg) {
+  RetimeMachine m;
+  m.nodes = pm.nodes;
+  m.topology = pm.topology;
+  m.fidelity = cfg.fidelity;
+  m.net = pm.net;
+  m.cost = pm.cost;
+  m.memory = pm.memory;
+  m.os_resident = pm.os_resident;
+  m.precision = 1e-12 * cfg.overrides.cost_scale.value_or(1.0);
+  return m;
+}
+
+nlohmann::json quantiles(const std::vector<double>& v) {
+  return {{"p05", quantile(v, 0.05)}, {"p50", quantile(v, 0.5)}, {"p95", quantile(v, 0.95)}};
+}
+
+// Writes the band of every figure from the draws' figures into the report.
+void write_bands(nlohmann::json& report, const std::vector<Figures>& draws, nlohmann::json b) {
+  std::vector<double> vt, ts;
+  std::map<std::string, std::vector<double>> ph;
+  int failed = 0;
+  for (const Figures& f : draws) {
+    if (!f.ok) {
+      ++failed;
+      continue;
+    }
+    vt.push_back(f.virtual_time_s);
+    if (f.timed_s >= 0) ts.push_back(f.timed_s);
+    for (const auto& [n, v] : f.phases)
+      ph[n].push_back(v);
+  }
+  b["failed_draws"] = failed;
+  if (vt.empty()) {
+    b["method"] = "unavailable";
+    b["why"] = "no draw ran to its end";
+    report["bands"] = std::move(b);
+    return;
+  }
+  b["virtual_time_s"] = quantiles(vt);
+  if (!ts.empty()) b["timed_s"] = quantiles(ts);
+  b["values"] = {{"virtual_time_s", vt}};
+  if (!ts.empty()) b["values"]["timed_s"] = ts;
+  for (auto& p : report["phases"]) {
+    const std::string name = p["name"];
+    if (auto it = ph.find(name); it != ph.end()) {
+      p["bands"] = quantiles(it->second);
+      b["values"]["phases"][name] = it->second;
+    }
+  }
+  report["bands"] = std::move(b);
+}
+
+nlohmann::json band_header(const SimConfig& cfg, const BandsRequest& req,
+                           const std::string& machine, const char* method) {
+  return {{"draws", req.draws},
+          {"seed", req.seed},
+          {"method", method},
+          {"model", "docs/uncertainty.md"},
+          {"machine_ranges", uncertainty_spec(machine).known},
+          {"fidelity", fidelity_name(cfg.fidelity)}};
+}
+
+// Elasticities of every figure against every model parameter, by central differences of the
+// retimed run (nominal structural factors).
+nlohmann::json sensitivity(const CallTrace& t, const RetimeMachine& m, double step) {
+  nlohmann::json s = {{"step", step}, {"method", "retimed"}};
+  const auto& params = model_parameters();
+  for (std::size_t p = 0; p < params.size(); ++p) {
+    const Figures up = figures_of(retime(t, m, scaled_parameter(p, std::exp(step))));
+    const Figures down = figures_of(retime(t, m, scaled_parameter(p, std::exp(-step))));
+    if (!up.ok || !down.ok) continue;
+    const auto e = [step](double a, double b) {
+      return a > 0 && b > 0 ? (std::log(a) - std::log(b)) / (2 * step) : 0.0;
+    };
+    s["virtual_time_s"][params[p]] = e(up.virtual_time_s, down.virtual_time_s);
+    if (up.timed_s >= 0) s["timed_s"][params[p]] = e(up.timed_s, down.timed_s);
+    for (const auto& [name, v] : up.phases)
+      s["phases"][name][params[p]] = e(v, down.phases.at(name));
+  }
+  return s;
+}
+
+} // namespace
+
+std::string add_bands(nlohmann::json& report, const CallTrace& trace, const PlatformModel& pm,
+                      const SimConfig& cfg, const BandsRequest& req) {
+  const RetimeMachine m = retime_machine(pm, cfg);
+  if (std::string why = retimable(m); !why.empty()) return why;
+  // The retimer must give the simulated run's own figures before it prices anything else.
+  const double agreement =
+      disagreement(figures_of(retime(trace, m, ModelDraw{})), figures_of(report));
+  if (!(agreement <= 1e-9))
+    return "the retimed run differs from the simulation by " + std::to_string(agreement) +
+           " (relative)";
+  if (req.draws > 0) {
+    std::vector<Figures> draws;
+    int diverged = 0;
+    for (const ModelDraw& d : model_draws(pm.machine, req.draws, req.seed)) {
+      const RetimedRun r = retime(trace, m, d);
+      diverged += r.status == RetimedRun::Status::Diverged;
+      draws.push_back(figures_of(r));
+    }
+    nlohmann::json b = band_header(cfg, req, pm.machine, "retimed");
+    b["agreement_rel"] = agreement;
+    b["diverged_draws"] = diverged;
+    write_bands(report, draws, std::move(b));
+  }
+  if (req.sensitivity) report["sensitivity"] = sensitivity(trace, m, req.step);
+  return "";
+}
+
+namespace {
+
+// Whether a run of cfg can be retimed, as far as the configuration says before it runs (a
+// platform file's links are known only once it is loaded).
+bool expect_retimable(const SimConfig& cfg) {
+  if (cfg.fidelity == Fidelity::Flow) return false;
+  if (is_platform_file(cfg.machine)) return true;
+  NetworkParams n = machine_spec(cfg.machine).net;
+  if (cfg.overrides.bandwidth_Bps) n.per_byte_s = 1.0 / *cfg.overrides.bandwidth_Bps;
+  return !n.half_duplex_limited();
+}
+
+// Every draw a simulation of its own, in child processes: the first records, the others replay.
+std::vector<Figures> simulated_draws(const SimConfig& cfg, const BandsRequest& req,
+                                     const std::string& machine) {
+  std::vector<SimConfig> points;
+  for (const ModelDraw& d : model_draws(machine, req.draws, req.seed)) {
+    SimConfig c = cfg;
+    c.draw = std::make_shared<const ModelDraw>(d);
+    c.compare_with_sequential = false;
+    c.timeline = false;
+    points.push_back(std::move(c));
+  }
+  ReplayRunner runner{[](const SimConfig&) { return std::string("draws"); },
+                      [](const SimConfig& c, std::vector<std::uint8_t>* trace) {
+                        std::shared_ptr<CallTrace> t;
+                        SimResult r = record_simulation(c, nullptr, t);
+                        if (t && trace) *trace = t->serialize();
+                        return r.report;
+                      },
+                      [](const SimConfig& c,
+                         const std::vector<std::uint8_t>& bytes) -> std::optional<nlohmann::json> {
+                        auto t = std::make_shared<const CallTrace>(CallTrace::parse(bytes));
+                        auto r = replay_simulation(c, nullptr, t);
+                        if (!r) return std::nullopt;
+                        return std::move(r->report);
+                      }};
+  TraceStore traces;
+  std::vector<Figures> out;
+  for (const auto& j : run_batch_replaying(points, default_jobs(), runner, traces))
+    out.push_back(figures_of(j));
+  return out;
+}
+
+} // namespace
+
+SimResult run_with_bands(const SimConfig& cfg, const BandsRequest& req, const Scene* preloaded) {
+  std::vector<Figures> simulated;
+  const bool retimed = expect_retimable(cfg);
+  std::string machine = is_platform_file(cfg.machine) ? std::string() : cfg.machine;
+  if (!retimed && req.draws > 0) simulated = simulated_draws(cfg, req, machine);
+  std::shared_ptr<CallTrace> trace;
+  PlatformModel pm;
+  SimResult r = record_simulation(cfg, preloaded, trace, &pm);
+  if (!r.ok) return r;
+  std::string why = "the run read the clock: its calls may depend on the times";
+  if (!retimed)
+    why = cfg.fidelity == Fidelity::Flow
+              ? "the flow fidelity shares links through SimGrid's solver"
+              : "links whose directions slow each other down are dated by the simulator";
+  else if (trace)
+    why = add_bands(r.report, *trace, pm, cfg, req);
+  if (!retimed && req.draws > 0) {
+    nlohmann::json b = band_header(cfg, req, pm.machine, "simulated");
+    b["why_simulated"] = why;
+    write_bands(r.report, simulated, std::move(b));
+  }
+  if (!why.empty()) {
+    if (req.draws > 0 && retimed)
+      r.report["bands"] = {{"method", "unavailable"}, {"why", why}, {"draws", req.draws}};
+    if (req.sensitivity) r.report["sensitivity"] = {{"method", "unavailable"}, {"why", why}};
+  }
+  return r;
+}
+
+} // namespace zc

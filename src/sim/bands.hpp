@@ -1,0 +1,34 @@
+#pragma once
+// A prediction with its band and its sensitivities (docs/uncertainty.md). The run is simulated
+// once, recording its calls; each draw of the uncertainty model (machine/uncertainty.hpp) then
+// prices those calls again: retimed in this process (sim/retime.hpp) where the retimer reproduces
+// the simulator, else replayed by full simulations in child processes. The report gains a "bands"
+// section (p05, p50, p95 of the virtual time, the timed region and every phase, and every draw's
+// values, so that a study can pair its points draw by draw) and, when asked, a "sensitivity"
+// section (the elasticity d ln T / d ln theta of every model parameter).
+#include <cstdint>
+
+#include "run/config.hpp"
+
+namespace zc {
+
+struct BandsRequest {
+  int draws = 0; // 0: no band
+  std::uint64_t seed = 1;
+  bool sensitivity = false;
+  double step = 0.01; // the sensitivity's relative step (central differences in log space)
+};
+
+struct CallTrace;
+struct PlatformModel;
+// Adds the bands and sensitivities of `req` to `report`, the report of the run that recorded
+// `trace` on `pm` (its machine after what-ifs), by retiming; returns why it could not ("" when it
+// did): a machine the retimer does not cover, or a retimer that disagrees with the run.
+std::string add_bands(nlohmann::json& report, const CallTrace& trace, const PlatformModel& pm,
+                      const SimConfig& cfg, const BandsRequest& req);
+
+// Like run_simulation, once per process; the draws that need a simulation of their own fork.
+SimResult run_with_bands(const SimConfig& cfg, const BandsRequest& req,
+                         const Scene* preloaded = nullptr);
+
+} // namespace zc
