@@ -24,8 +24,8 @@ struct SimCost {
   std::uint64_t actors = 0;
   // SimGrid timers set by zcube's wake-ups (one per distinct wake-up date).
   std::uint64_t timers = 0;
-  // zcube's own network events: a channel's release, a circuit's next stage, the start and end
-  // of a hop's bytes on half-duplex-limited links.
+  // zcube's own network events: a contended channel's release and a message's next stage
+  // (circuit), the start and end of a hop's bytes on half-duplex-limited links.
   std::uint64_t network_events = 0;
   // Transfers whose bandwidth SimGrid's network model shares (the flow fidelity's messages, one
   // per hop on store-and-forward links and per host-link leg).
