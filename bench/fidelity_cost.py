@@ -104,17 +104,48 @@ def cpu_model():
     return platform.processor() or "unknown"
 
 
+def correlation(x, y):
+    mx, my = statistics.mean(x), statistics.mean(y)
+    sxy = sum((a - mx) * (b - my) for a, b in zip(x, y))
+    sxx, syy = sum((a - mx) ** 2 for a in x), sum((b - my) ** 2 for b in y)
+    return sxy / (sxx * syy) ** 0.5 if sxx > 0 and syy > 0 else float("nan")
+
+
+def what_tracks_the_cpu(rows):
+    """Which deterministic cost follows the host CPU a model adds: over every run, flow's and
+    circuit's paired CPU beyond analytic's against their cost beyond analytic's."""
+    by = {(r["run"], r["fidelity"]): r for r in rows}
+    extra_cpu, extra = [], {k: [] for k in COST_COLUMNS if k != "messages"}
+    for (run, f), r in by.items():
+        if f == "analytic" or (run, "analytic") not in by:
+            continue
+        extra_cpu.append(float(r["over_analytic_s"]))
+        for k in extra:
+            extra[k].append(int(r[k]) - int(by[(run, "analytic")][k]))
+    if len(extra_cpu) < 3:
+        return ""
+    rs = ", ".join(f"`{k}` {correlation(extra_cpu, v):.2f}" for k, v in extra.items())
+    switches = sum(extra["actor_switches"])
+    per = sum(extra_cpu) / switches * 1e6 if switches > 0 else float("nan")
+    return (f"\nWhich deterministic cost follows the host CPU a model adds: over the "
+            f"{len(extra_cpu)} (run, flow or circuit) pairs, the correlation of the CPU beyond "
+            f"analytic's with the cost beyond analytic's is {rs}; in all, {per:.1f} us of host "
+            "CPU per actor switch beyond analytic's.\n")
+
+
 def plot(rows, fig_path):
-    """Each model's error (fidelity.csv) against its median host CPU, min-max as bars."""
+    """Left: each model's error (fidelity.csv) against its median host CPU, min to max as bars.
+    Right: the paired CPU beyond analytic's against the actor switches beyond analytic's."""
     try:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
+        from matplotlib.ticker import FixedLocator, FuncFormatter, NullFormatter
     except ImportError:
         print("no matplotlib: no plot", file=sys.stderr)
         return
     style = {"analytic": ("o", "#1f77b4"), "flow": ("s", "#d95f02"), "circuit": ("^", "#444444")}
-    fig, ax = plt.subplots(figsize=(7.5, 4.6))
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(13, 4.8))
     by_run = {}
     for r in rows:
         by_run.setdefault(r["run"], []).append(r)
@@ -128,14 +159,31 @@ def plot(rows, fig_path):
         hi = [float(r["cpu_max_s"]) - xi for xi, r in zip(x, mine)]
         ax.errorbar(x, [float(r["rel_error"]) * 100 for r in mine], xerr=[lo, hi], fmt=m,
                     color=c, ms=5, elinewidth=0.8, capsize=2, label=f, zorder=3)
+        if f == "analytic":
+            continue
+        base = {r["run"]: r for r in rows if r["fidelity"] == "analytic"}
+        bx.scatter([int(r["actor_switches"]) - int(base[r["run"]]["actor_switches"])
+                    for r in mine], [float(r["over_analytic_s"]) * 1e3 for r in mine],
+                   marker=m, color=c, s=30, label=f, zorder=3)
     ax.set_xscale("log")
     ax.set_yscale("symlog", linthresh=0.01)
+    ax.set_ylim(-20, 20)
+    ax.yaxis.set_major_locator(FixedLocator([-10, -1, -0.1, -0.01, 0, 0.01, 0.1, 1, 10]))
+    ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:+g}" if v else "0"))
+    ax.yaxis.set_minor_formatter(NullFormatter())
     ax.set_xlabel("host CPU of one `zcube run` (s, median; bars: min to max)")
-    ax.set_ylabel("error of the virtual time against circuit (%)")
-    ax.set_title("Network models: error against host CPU, one point per model and run",
-                 fontsize=10)
+    ax.set_ylabel("error of the virtual time against circuit (%, symmetric log)")
+    ax.set_title("Error against host CPU, one point per model and run", fontsize=10)
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=8.5)
+    bx.set_xscale("log")
+    bx.set_yscale("symlog", linthresh=1)
+    bx.axhline(0, color="black", lw=0.8)
+    bx.set_xlabel("actor switches beyond analytic's (the deterministic cost, log)")
+    bx.set_ylabel("host CPU beyond analytic's (ms, median of the pairs)")
+    bx.set_title("What a model adds: host CPU against simulator events", fontsize=10)
+    bx.grid(alpha=0.3, which="both")
+    bx.legend(fontsize=8.5)
     fig.tight_layout()
     fig.savefig(fig_path, dpi=110)
 
@@ -226,7 +274,13 @@ def main():
             "absolute times.\n\n"
             "| fidelity | sum of the runs' median CPU (s) | beyond analytic's (s, sum of the "
             "paired medians) | median ratio to analytic | range over the runs |\n"
-            "|---|---|---|---|---|\n" + "\n".join(summary) + "\n")
+            "|---|---|---|---|---|\n" + "\n".join(summary) + "\n" + what_tracks_the_cpu(rows) +
+            "\nEvery row (`fidelity_cost.csv`): the run's median, min and max CPU over the "
+            "repetitions, the medians of its paired ratio to analytic and of its paired CPU beyond "
+            "analytic's, its error (`fidelity.csv`) and its deterministic cost (the report's "
+            "`simulation_cost`, checked equal to `fidelity.csv`'s at every repetition). "
+            "`fidelity_cost.png`: the error against the median CPU, and the CPU beyond analytic's "
+            "against the actor switches beyond analytic's.\n")
     if not a.no_plot:
         plot(rows, os.path.join(a.out, "fidelity_cost.png"))
     print(open(os.path.join(a.out, "fidelity_cost.md")).read())
