@@ -440,15 +440,53 @@ def calibration(d):
     save(fig, os.path.join(d, "calibration", "calibration.png"))
 
 
+# The deterministic cost the fidelity plot puts on its x axis (a column of fidelity.csv, written
+# from the report's simulation_cost: the same in every run, on any host).
+FIDELITY_COST = ("actor_switches", "simulator events: actors' switches to SimGrid and back")
+
+
 def fidelity(d):
-    """The error of the analytic and flow models against circuit, run by run (deterministic:
-    virtual times only; the host's wall times are in host_cost.csv, not plotted)."""
+    """The error of each network model against circuit, against what it cost the simulator (left:
+    one point per model and run, the deterministic cost of fidelity.csv; the host's seconds are
+    bench/fidelity_cost.py's), and run by run (right)."""
     fr = rows(os.path.join(d, "fidelity.csv"))
     if not fr:
         return
     runs = list(dict.fromkeys(r["run"] for r in fr))
     models = {"analytic": ("o", "#1f77b4", -0.17), "flow": ("s", "#d95f02", 0.17)}
-    fig, ax = subplots(figsize=(8.5, 0.42 * len(runs) + 1.6))
+    every = dict(models, circuit=("^", "#444444", 0))
+    column, what = FIDELITY_COST
+    fig, (cax, ax) = subplots(1, 2, figsize=(15, 0.42 * len(runs) + 2.2))
+    # Left: error against cost, a run's three models joined by a thin line.
+    cost_points = defaultdict(list)  # model -> [(cost, error %, run index)]
+    for r in fr:
+        c, e = number(r.get(column)), number(r["rel_error"])
+        if r["fidelity"] in every and c is not None and c > 0 and e is not None:
+            cost_points[r["fidelity"]].append((c, e * 100, runs.index(r["run"])))
+    for i in range(len(runs)):
+        mine = sorted((c, e) for pts in cost_points.values() for c, e, k in pts if k == i)
+        cax.plot([c for c, _ in mine], [e for _, e in mine], color="#bbbbbb", lw=0.8, zorder=1,
+                 label="_run")
+    for f, (marker, colour, _) in every.items():
+        pts = cost_points.get(f, [])
+        if pts:
+            cax.scatter([c for c, _, _ in pts], [e for _, e, _ in pts], s=34, marker=marker,
+                        color=colour, zorder=3)
+    for c, e, k in cost_points.get("circuit", []):
+        cax.annotate(str(k + 1), (c, e), xytext=(0, -11), textcoords="offset points",
+                     ha="center", fontsize=7.5, color="#444444")
+    cax.set_xscale("log")
+    cax.set_yscale("symlog", linthresh=0.01)
+    ticks = [-10, -1, -0.1, -0.01, 0, 0.01, 0.1, 1, 10]
+    cax.set_ylim(-20, 20)
+    cax.yaxis.set_major_locator(FixedLocator(ticks))
+    cax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:+g}" if v else "0"))
+    cax.yaxis.set_minor_formatter(NullFormatter())
+    cax.set_xlabel(f"{what} (`{column}`, log)")
+    cax.set_ylabel("error of the virtual time against circuit (%, symmetric log)")
+    cax.set_title("Error against cost, one point per model and run", fontsize=10.5)
+    cax.grid(alpha=0.3, which="both")
+    # Right: the error run by run.
     ax.axvline(0, color="black", lw=1.2, label="circuit (the reference)")
     points = []  # (model, error %, y) of each run
     for r in fr:
@@ -467,20 +505,21 @@ def fidelity(d):
                         textcoords="offset points", va="center", fontsize=7.5,
                         ha="left" if e >= 0 else "right", color=models[f][1])
     ax.set_yticks(range(len(runs)))
-    ax.set_yticklabels([run_label(r) for r in runs], fontsize=8.5)
+    ax.set_yticklabels([f"{i + 1}. {run_label(r)}" for i, r in enumerate(runs)], fontsize=8.5)
     ax.invert_yaxis()
     lo, hi = ax.get_xlim()
     span = max(abs(lo), abs(hi), 1.0) * 1.25
     ax.set_xlim(-span, span * 0.6 if hi < span * 0.4 else span)
     ax.set_xlabel("error of the virtual time against circuit (%)")
     ax.set_ylabel("run (algorithm, scene, machine, P)")
-    ax.set_title("Network models against circuit switching (the reference), run by run", fontsize=10.5)
+    ax.set_title("Run by run", fontsize=10.5)
     ax.grid(axis="x", alpha=0.3)
-    handles = [Line2D([], [], color="black", lw=1.2, label="circuit (the reference)")]
-    handles += [Line2D([], [], marker=m, color=c, ls="none", label=f + (
-        ": no contention" if f == "analytic" else ": SimGrid's bandwidth sharing"))
-        for f, (m, c, _) in models.items()]
+    handles = [Line2D([], [], marker=m, color=c, ls="none", label=f + (
+        ": no contention" if f == "analytic" else ": SimGrid's bandwidth sharing"
+        if f == "flow" else ": channels held in dimension order (the reference, the black line)"))
+        for f, (m, c, _) in every.items()]
     fig.legend(handles=handles, fontsize=8.5, loc="lower center", ncol=3, frameon=False)
+    fig.suptitle("Network models against circuit switching: error and simulator cost")
     save(fig, os.path.join(d, "fidelity.png"))
 
 

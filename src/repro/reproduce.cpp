@@ -74,8 +74,22 @@ std::string top_readme(const ReproduceOptions& o, std::size_t points,
          "(SimGrid's CM02). `virtual_s` is the paper's timed region where the algorithm marks one "
          "(Kurc's three Table 2 phases, elastic's per-picture loop; docs/papers.md), else the "
          "whole run. `paper_rel_error` is against the seeds' figure where one exists "
-         "(Kurc Table 2's pixel merging at 16 nodes). The host's wall time of each run is in "
-         "`host_cost.csv` (not committed).\n\n" +
+         "(Kurc Table 2's pixel merging at 16 nodes).\n\n"
+         "What each model costs, in the simulator's own events (the reports' `simulation_cost`, "
+         "the same in every run, on any host): `messages` the algorithm sent, `flows` the "
+         "transfers whose bandwidth SimGrid's model shares (flow: one per message that carries "
+         "bytes to another node, per hop on store-and-forward links), `network_events` zcube's "
+         "own network events (circuit: a contended channel's release, a message's next stage; "
+         "circuit and analytic on the Volvox's half-duplex-limited links: the start and end of "
+         "a hop's bytes), `time_steps` the dates SimGrid's engine advanced to, "
+         "`actor_switches` the times an actor (a rank, the network's actor, a message's "
+         "courier) gave the CPU to SimGrid and was resumed. fidelity.png draws the error "
+         "against `actor_switches`, the count that follows the host CPU a model adds over "
+         "analytic's (with `flows`, which is 0 under analytic and circuit; "
+         "`fidelity_cost.md`). The host CPU of each model, the median of repeated "
+         "runs, is measured apart (`bench/fidelity_cost.py`: `fidelity_cost.csv`, "
+         "`fidelity_cost.md`, dated, with the machine it ran on); the host's wall time of this "
+         "run's simulations is in `host_cost.csv` (not committed).\n\n" +
          fidelity_md;
 }
 

@@ -64,7 +64,7 @@ struct PaperPlan {
 PaperPlan kurc_plan(const ReproduceOptions& o);
 PaperPlan charles_plan(const ReproduceOptions& o);
 PaperPlan blazek_plan(const ReproduceOptions& o);
-PaperPlan fidelity_plan(const ReproduceOptions& o); // fidelity.csv: error against run time
+PaperPlan fidelity_plan(const ReproduceOptions& o); // fidelity.csv: error against cost
 // results/compositing/: every compositing strategy on the three machines
 // (reproduce_compositing.cpp)
 PaperPlan compositing_plan(const ReproduceOptions& o);

@@ -56,21 +56,46 @@ std::string paper_error(const nlohmann::json& rep) {
   return pick ? num((*pick)["rel_error"].get<double>(), 4) : "";
 }
 
+// What each run cost the simulator, in its own events (the report's simulation_cost, the same in
+// every run; sim/sim_cost.hpp): the messages the algorithm sent, the transfers SimGrid's bandwidth
+// sharing solved (flow), zcube's own network events (circuit), SimGrid's time steps and the
+// actors' switches to SimGrid and back. The host seconds they take are measured apart, by
+// bench/fidelity_cost.py (results/fidelity_cost.csv).
+const char* const kCostColumns[] = {"flows", "network_events", "time_steps", "actor_switches"};
+
+std::vector<std::string> cost_cells(const nlohmann::json& rep) {
+  std::vector<std::string> cells = {
+      std::to_string(rep.at("communication").at("messages").get<std::uint64_t>())};
+  const nlohmann::json& c = rep.at("simulation_cost");
+  for (const char* k : kCostColumns)
+    cells.push_back(std::to_string(c.at(k).get<std::uint64_t>()));
+  return cells;
+}
+
 // fidelity.csv holds the deterministic outputs only; the host's wall time of each run goes to
 // host_cost.csv, which is not committed (it varies from run to run and machine to machine).
 std::string write_fidelity(const Reports& reps, const std::string& dir) {
-  Table t{{"run", "fidelity", "nodes", "virtual_s", "rel_error", "paper_rel_error"}, {}};
+  Table t{{"run", "fidelity", "nodes", "virtual_s", "rel_error", "paper_rel_error", "messages"},
+          {}};
+  for (const char* k : kCostColumns)
+    t.header.push_back(k);
   Table host{{"run", "fidelity", "nodes", "wall_s", "peak_rss_bytes"}, {}};
   for (const auto& r : kRuns) {
     const auto& ref = reps.at(key(r, "circuit"));
     for (const char* f : kFidelities) {
       const auto& rep = reps.at(key(r, f));
       if (!ok(rep) || !ok(ref)) {
-        t.add({r.name, f, std::to_string(r.nodes), "error", "", ""});
+        std::vector<std::string> row = {r.name, f, std::to_string(r.nodes), "error", "", ""};
+        row.resize(t.header.size());
+        t.add(row);
         continue;
       }
       const double v = virtual_s(rep), e = (v - virtual_s(ref)) / virtual_s(ref);
-      t.add({r.name, f, std::to_string(r.nodes), num(v), num(e, 4), paper_error(rep)});
+      std::vector<std::string> row = {r.name, f,         std::to_string(r.nodes),
+                                      num(v), num(e, 4), paper_error(rep)};
+      for (auto& c : cost_cells(rep))
+        row.push_back(std::move(c));
+      t.add(row);
       if (rep.contains("host"))
         host.add({r.name, f, std::to_string(r.nodes), num(rep["host"].value("wall_time_s", 0.0), 3),
                   num(rep["host"].value("peak_rss_bytes", 0.0))});

@@ -16,9 +16,10 @@ constexpr double kNever = -std::numeric_limits<double>::infinity();
 } // namespace
 
 Delivery::Delivery(SimNetwork& net, Fidelity fidelity, std::vector<sg::Host*> hosts,
-                   unsigned message_stack_kib)
-    : net_(net), fidelity_(fidelity),
-      wakeups_(simgrid::config::get_value<double>("surf/precision")), hosts_(std::move(hosts)),
+                   unsigned message_stack_kib, SimCost& cost)
+    : net_(net), fidelity_(fidelity), cost_(cost),
+      wakeups_(simgrid::config::get_value<double>("surf/precision"), cost),
+      hosts_(std::move(hosts)),
       message_stack_kib_(std::min(
           message_stack_kib, unsigned(simgrid::config::get_value<int>("contexts/stack-size")))),
       ranks_(net.nodes() + 1), inboxes_(std::size_t(ranks_), Inbox(ranks_)), waiters_(ranks_ + 1),
@@ -34,8 +35,10 @@ Delivery::Delivery(SimNetwork& net, Fidelity fidelity, std::vector<sg::Host*> ho
   }
   for (int i = 0; i <= ranks_; ++i)
     waiters_[std::size_t(i)].sleeper.order = i; // ranks, then the network's actor
-  if (events_driven_)
+  if (events_driven_) {
     sg::Actor::create("network", hosts_.back(), [this] { network_loop(); })->daemonize();
+    ++cost_.actors;
+  }
 }
 
 // A rank blocks until its wake-up: its deadline, or an earlier one that a message moved it to
@@ -132,6 +135,7 @@ void Delivery::carry(const TransitPtr& m, double bytes) {
                  ->set_stacksize(message_stack_kib_)
                  ->start([this, c] { courier_loop(*c); });
   c->actor->daemonize(); // an idle courier does not keep the simulation going
+  ++cost_.actors;
 }
 
 void Delivery::courier_loop(Courier& c) {
@@ -142,8 +146,10 @@ void Delivery::courier_loop(Courier& c) {
     arrived(*m);
     idle_couriers_[std::size_t(m->src)].push_back(&c);
     m.reset();
-    while (!c.job)
+    while (!c.job) {
+      ++cost_.actor_switches;
       sg::this_actor::suspend();
+    }
   }
 }
 
@@ -309,6 +315,7 @@ void Delivery::schedule_ends(const std::vector<DuplexLinks::Change>& changes) {
 }
 
 void Delivery::process(const Event& e) {
+  ++cost_.network_events;
   std::vector<TransitPtr>& woken = woken_;
   woken.clear();
   std::vector<DuplexLinks::Change> changes;

@@ -23,6 +23,7 @@
 #include "machine/topology.hpp"
 #include "sim/duplex_links.hpp"
 #include "sim/inbox.hpp"
+#include "sim/sim_cost.hpp"
 #include "sim/sim_network.hpp"
 #include "sim/transit.hpp"
 #include "sim/wakeups.hpp"
@@ -32,9 +33,10 @@ namespace zc {
 class Delivery {
 public:
   // message_stack_kib: the stack of a message's actor under the flow fidelity (KiB, capped at
-  // contexts/stack-size).
+  // contexts/stack-size). `cost` counts what delivering costs the simulator (SimCost); it must
+  // outlive this.
   Delivery(SimNetwork& net, Fidelity fidelity, std::vector<simgrid::s4u::Host*> hosts,
-           unsigned message_stack_kib);
+           unsigned message_stack_kib, SimCost& cost);
 
   // Sends at the current virtual time; the message's arrival is set now or later. The network is
   // charged m.charged bytes, whatever the payload's size. A message of several blocks comes as
@@ -137,6 +139,7 @@ private:
 
   SimNetwork& net_;
   Fidelity fidelity_;
+  SimCost& cost_;
   Wakeups wakeups_;
   std::vector<simgrid::s4u::Host*> hosts_;
   unsigned message_stack_kib_;

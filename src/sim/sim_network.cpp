@@ -9,8 +9,15 @@ namespace zc {
 namespace sg = simgrid::s4u;
 
 SimNetwork::SimNetwork(const NetworkParams& params, Topology topo, int nodes, Fidelity fidelity,
-                       std::vector<sg::Host*> hosts)
-    : p_(params), topo_(topo), nodes_(nodes), fid_(fidelity), hosts_(std::move(hosts)) {}
+                       std::vector<sg::Host*> hosts, SimCost& cost)
+    : p_(params), topo_(topo), nodes_(nodes), fid_(fidelity), hosts_(std::move(hosts)),
+      cost_(cost) {}
+
+// A SimGrid sleep of the calling actor (counted as its switch to SimGrid and back).
+void SimNetwork::sleep(double seconds) {
+  ++cost_.actor_switches;
+  sg::this_actor::sleep_for(seconds);
+}
 
 sg::MutexPtr SimNetwork::channel(int a, int b) {
   auto& m = channels_[{a, b}];
@@ -23,13 +30,16 @@ sg::MutexPtr SimNetwork::channel(int a, int b) {
 void SimNetwork::hold(const std::vector<std::pair<int, int>>& chans, double seconds,
                       double flow_bytes, int flow_src, int flow_dst) {
   if (fid_ == Fidelity::Flow) {
-    if (seconds > 0) sg::this_actor::sleep_for(seconds);
-    if (flow_bytes > 0)
+    if (seconds > 0) sleep(seconds);
+    if (flow_bytes > 0) {
+      ++cost_.flows;
+      ++cost_.actor_switches;
       sg::Comm::sendto(hosts_[flow_src], hosts_[flow_dst], std::uint64_t(flow_bytes));
+    }
     return;
   }
   if (fid_ == Fidelity::Analytic || chans.empty()) {
-    if (seconds > 0) sg::this_actor::sleep_for(seconds);
+    if (seconds > 0) sleep(seconds);
     return;
   }
   // Circuit: acquire every channel of the path in one global order (dimension order on the
@@ -48,7 +58,7 @@ void SimNetwork::hold(const std::vector<std::pair<int, int>>& chans, double seco
     held.push_back(channel(c.first, c.second));
     held.back()->lock();
   }
-  if (seconds > 0) sg::this_actor::sleep_for(seconds);
+  if (seconds > 0) sleep(seconds);
   for (auto it = held.rbegin(); it != held.rend(); ++it)
     (*it)->unlock();
 }

@@ -11,6 +11,7 @@
 
 #include "machine/machine.hpp"
 #include "run/fidelity.hpp"
+#include "sim/sim_cost.hpp"
 
 namespace zc {
 
@@ -30,8 +31,9 @@ struct Hold {
 
 class SimNetwork {
 public:
+  // `cost` counts the transfers' SimGrid activities (SimCost); it must outlive this.
   SimNetwork(const NetworkParams& params, Topology topo, int nodes, Fidelity fidelity,
-             std::vector<simgrid::s4u::Host*> hosts);
+             std::vector<simgrid::s4u::Host*> hosts, SimCost& cost);
 
   // Blocks the calling actor for the duration of the transfer (the flow fidelity: SimGrid shares
   // the links' bandwidth).
@@ -51,6 +53,7 @@ private:
   void node_holds(int src, int dst, double bytes, std::vector<Hold>& out, std::size_t& n) const;
   void finish_hold(std::vector<Hold>& out, std::size_t& n, double fixed, double bytes,
                    bool node_links) const;
+  void sleep(double seconds);
   void hold(const std::vector<std::pair<int, int>>& channels, double seconds, double flow_bytes,
             int flow_src, int flow_dst);
   simgrid::s4u::MutexPtr channel(int a, int b);
@@ -60,6 +63,7 @@ private:
   int nodes_;
   Fidelity fid_;
   std::vector<simgrid::s4u::Host*> hosts_; // nodes then srm
+  SimCost& cost_;
   std::map<std::pair<int, int>, simgrid::s4u::MutexPtr> channels_;
   mutable std::vector<std::pair<int, int>> route_; // node_holds' scratch (capacity kept)
 };

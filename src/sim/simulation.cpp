@@ -25,6 +25,7 @@
 #include "scene/load.hpp"
 #include "sim/platform_load.hpp"
 #include "sim/sim_context.hpp"
+#include "sim/sim_cost.hpp"
 #include "util/error.hpp"
 #include "util/input_file.hpp"
 
@@ -169,8 +170,9 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
   for (int r = 0; r < P; ++r)
     hosts.push_back(e.host_by_name(node_host_name(r)));
   hosts.push_back(e.host_by_name(kHostComputerName));
-  SimNetwork net(pm.net, pm.topology, P, cfg.fidelity, hosts);
-  Delivery delivery(net, cfg.fidelity, hosts, message_stack_kib(cfg.simgrid_args));
+  SimCost sim_cost;
+  SimNetwork net(pm.net, pm.topology, P, cfg.fidelity, hosts, sim_cost);
+  Delivery delivery(net, cfg.fidelity, hosts, message_stack_kib(cfg.simgrid_args), sim_cost);
 
   std::vector<NodeStats> stats(P + 1);
   if (cfg.timeline)
@@ -216,6 +218,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
   for (int r = 0; r < P; ++r)
     sg::Actor::create("node" + std::to_string(r), hosts[r], [&, r] { body(r, algo.node); });
   if (algo.uses_host) sg::Actor::create("srm", hosts[P], [&] { body(P, algo.host); });
+  sim_cost.actors += std::uint64_t(P + (algo.uses_host ? 1 : 0));
   e.run();
   const double vtime = sg::Engine::get_clock();
   // A rank still blocked when nothing else can happen waits for a message nobody sends.
@@ -264,6 +267,8 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
   if (pm.net.both_ways_Bps > 0) j["model"]["both_ways_Bps"] = pm.net.both_ways_Bps;
   add_cpu_and_what_ifs(j, pm, cfg.overrides);
 
+  // What the simulation cost in events: the same in every run of this configuration, on any host.
+  j["simulation_cost"] = sim_cost;
   add_image_section(j, images, scene, cfg, res.ok, res.images);
   j["host"] = {{"wall_time_s",
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count()},

@@ -37,11 +37,14 @@ void sort_by_order(std::vector<Wakeups::Sleeper*>& v) {
 thread_local Wakeups* clock_owner = nullptr;
 } // namespace
 
-Wakeups::Wakeups(double precision) : precision_(precision), now_(sg::Engine::get_clock()) {
+Wakeups::Wakeups(double precision, SimCost& cost)
+    : precision_(precision), cost_(cost), now_(sg::Engine::get_clock()) {
   static thread_local bool connected = false;
   if (!connected) {
     sg::Engine::on_time_advance_cb([](double) {
-      if (clock_owner) clock_owner->now_ = sg::Engine::get_clock();
+      if (!clock_owner) return;
+      clock_owner->now_ = sg::Engine::get_clock();
+      ++clock_owner->cost_.time_steps;
     });
     connected = true;
   }
@@ -63,6 +66,7 @@ void Wakeups::set_after(Sleeper& s, double seconds, double reached) {
   auto [it, fresh] = due_.try_emplace(date);
   if (fresh) {
     it->second.timer = Timer::set(date, [this, date] { fire(date); });
+    ++cost_.timers;
     if (!spare_.empty()) { // a list of a date gone, its capacity kept
       it->second.sleepers = std::move(spare_.back());
       spare_.pop_back();
@@ -90,6 +94,7 @@ void Wakeups::unset(Sleeper& s) {
 
 double Wakeups::wait(Sleeper& s) {
   s.actor = sg::Actor::self();
+  ++cost_.actor_switches;
   sg::this_actor::suspend();
   return s.reached;
 }

@@ -14,6 +14,8 @@
 
 #include <simgrid/forward.h>
 
+#include "sim/sim_cost.hpp"
+
 namespace zc {
 
 class Wakeups {
@@ -26,8 +28,9 @@ public:
     double reached = 0; // what the caller learns on waking: the deadline of the wake-up
   };
 
-  // `precision`: SimGrid's timing precision (surf/precision), the shortest timed wait.
-  explicit Wakeups(double precision);
+  // `precision`: SimGrid's timing precision (surf/precision), the shortest timed wait. `cost`
+  // counts SimGrid's time steps, the timers set and the waits (SimCost), and must outlive this.
+  Wakeups(double precision, SimCost& cost);
   Wakeups(const Wakeups&) = delete;
   Wakeups& operator=(const Wakeups&) = delete;
   ~Wakeups();
@@ -58,6 +61,7 @@ private:
   void keep(std::vector<Sleeper*> list);
 
   double precision_;
+  SimCost& cost_;
   double now_;
   bool stopped_ = false; // after cancel_all(): no wake-up is set any more
   std::map<double, Due> due_;

@@ -2,8 +2,8 @@
 # The plots of `zcube reproduce` are fit for a paper, read from what the plot script says it drew
 # (--describe): every series in the legend, out-of-memory points marked, machine and P in the
 # titles, each speed-up's reference in its y label, log2 node axes, the Blazek panels on one shared
-# log scale, every fidelity run labelled (no host time), the calibration plot, axis labels with
-# units, and the other formats.
+# log scale, every fidelity run labelled and its error drawn against its deterministic cost (no
+# host time), the calibration plot, axis labels with units, and the other formats.
 # usage: plots.sh SOURCE_DIR
 set -u
 src=$1
@@ -59,10 +59,16 @@ check("node-initiated" in b["axes"][0]["ylabel"], "blazek: the reference named: 
 check(len({tuple(a["ylim"]) for a in b["axes"]}) == 1, "blazek panels share one y range")
 f = figs["fidelity.svg"]
 runs = {r["run"] for r in rows("fidelity.csv")}
-check(len(f["axes"][0]["yticklabels"]) == len(runs), "fidelity: every run labelled")
-check(f["axes"][0]["points"] == sum(1 for r in rows("fidelity.csv") if r["fidelity"] != "circuit"),
-      "fidelity: every point of analytic and flow drawn (circuit is the reference line)")
-check("wall" not in f["axes"][0]["xlabel"], "fidelity: no host time: " + f["axes"][0]["xlabel"])
+cost, by_run = f["axes"][0], f["axes"][1]
+check(cost["points"] == len(rows("fidelity.csv")) and cost["xscale"] == "log"
+      and "actor_switches" in cost["xlabel"],
+      "fidelity: error against the deterministic cost (log), one point per model and run: %d "
+      "points, %s" % (cost["points"], cost["xlabel"]))
+check(len(by_run["yticklabels"]) == len(runs), "fidelity: every run labelled")
+check(by_run["points"] == sum(1 for r in rows("fidelity.csv") if r["fidelity"] != "circuit"),
+      "fidelity: every point of analytic and flow drawn run by run (circuit is the reference line)")
+check(all("wall" not in a["xlabel"] and "host" not in a["xlabel"] for a in f["axes"]),
+      "fidelity: no host time: " + cost["xlabel"])
 cal = figs["calibration/calibration.svg"]
 check(len(cal["axes"]) == 2 and cal["axes"][1]["points"] >= len(rows("calibration/crossval.csv")),
       "calibration: fit and cross-validation panels, every held-out target drawn")
