@@ -7,6 +7,7 @@
 #include <queue>
 
 #include "comm/comm.hpp"
+#include "sim/sim_cost.hpp"
 #include "sim/sim_network.hpp"
 
 namespace zc {
@@ -68,7 +69,7 @@ class Retimer {
 public:
   Retimer(const CallTrace& t, const RetimeMachine& m, const ModelDraw& d)
       : t_(t), m_(m), net_params_(apply_draw(m.net, d)),
-        net_(net_params_, m.topology, m.nodes, m.fidelity, {}),
+        net_(net_params_, m.topology, m.nodes, m.fidelity, {}, unused_cost_),
         circuit_(m.fidelity == Fidelity::Circuit), ranks_(t.ranks.size()),
         inbox_(t.ranks.size(), std::vector<std::deque<Msg*>>(t.ranks.size())) {
     for (std::size_t r = 0; r < t.ranks.size(); ++r) {
@@ -150,6 +151,7 @@ private:
   const CallTrace& t_;
   const RetimeMachine& m_;
   NetworkParams net_params_;
+  SimCost unused_cost_; // the simulator's own event counts: none here
   SimNetwork net_;
   bool circuit_;
   std::vector<CostTable> cost_;
