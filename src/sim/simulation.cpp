@@ -106,8 +106,10 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   std::string platform_label;
   const bool is_file = is_platform_file(cfg.machine);
   std::string builtin_xml;
+  std::vector<std::string> file_settings; // the file's <config>, checked as --cfg is
   if (is_file) {
-    check_input_file(cfg.machine);
+    check_platform_file(cfg.machine); // before this process has an engine: it tries the file
+    file_settings = platform_file_settings(cfg.machine);
     platform_label = cfg.machine;
   } else {
     check_node_count(cfg.topology, cfg.nodes);
@@ -134,6 +136,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   // (the ranks' stacks are 8 MiB, far more than the renderers use); --cfg=contexts/guard-size:1,
   // passed after this, puts them back.
   if (cfg.fidelity == Fidelity::Flow) args.push_back("--cfg=contexts/guard-size:0");
+  args.insert(args.end(), file_settings.begin(), file_settings.end());
   args.insert(args.end(), cfg.simgrid_args.begin(), cfg.simgrid_args.end());
   std::vector<char*> argv;
   for (auto& a : args)
