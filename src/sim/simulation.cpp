@@ -113,7 +113,11 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
     platform_label = cfg.machine;
   } else {
     check_node_count(cfg.topology, cfg.nodes);
-    builtin_xml = platform_xml(machine_spec(cfg.machine), cfg.nodes, cfg.topology);
+    // --cpu-scale is the host speed clock / k, as `zcube platform --cpu-scale` writes it: a file
+    // written with it runs as the flag does, to the bit (costs are cycles / speed either way).
+    PlatformEdits edits;
+    edits.cpu_scale = cfg.overrides.cpu_scale.value_or(1.0);
+    builtin_xml = platform_xml(machine_spec(cfg.machine), cfg.nodes, cfg.topology, edits);
     platform_label = "zcube platform --machine " + cfg.machine + " --nodes " +
                      std::to_string(cfg.nodes) + " --topology " + topology_name(cfg.topology);
   }
@@ -153,7 +157,9 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded) {
   if (is_file && cfg.nodes != pm.nodes && cfg.nodes != 0)
     throw UsageError("--nodes " + std::to_string(cfg.nodes) + " but " + platform_label +
                      " models " + std::to_string(pm.nodes) + " nodes");
-  apply_overrides(cfg.overrides, pm, e);
+  Overrides overrides = cfg.overrides;
+  if (!is_file) overrides.cpu_scale.reset(); // in the built-in machine's host speed already
+  apply_overrides(overrides, pm, e);
   const int P = pm.nodes;
   if (algo.check_nodes) algo.check_nodes(options, P);
 
