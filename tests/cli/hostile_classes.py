@@ -249,7 +249,7 @@ def gen_roundtrip(r, rng, count):
             print(f"ok   {name}: refused: {made.stderr.strip()}")
             continue
         run = [r.zcube, "run", "--scene", os.path.join(r.src, "scenes/kurc/1pot.json"),
-               "--size", "96x96",
+               "--size", "128x128",
                "--algorithm",
                rng.choice(["sort-last-folding", "elastic"] + (["pair-rs"] if topo == "cube" else [])),
                "--fidelity", rng.choice(["circuit", "flow", "analytic"])]
