@@ -159,8 +159,11 @@ void prepare_output_dir(const std::string& dir, const std::string& flag) {
   check_output_path((fs::path(dir) / "x").string(), flag); // it takes new files
 }
 
-void write_file_atomically(const std::string& path,
+void write_file_atomically(const std::string& path_given,
                            const std::function<bool(const std::string& tmp)>& produce) {
+  // A copy: `produce` may change the string `path_given` refers to (the Gantt charts' writer
+  // hands each chart's temporary name on through it).
+  const std::string path = path_given;
   std::error_code ec;
   fs::path target = path;
   if (fs::is_symlink(target, ec)) target = fs::weakly_canonical(target, ec); // keep the link

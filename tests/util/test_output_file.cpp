@@ -76,6 +76,22 @@ TEST(OutputFile, AFullDeviceIsAnErrorThroughALinkOrNot) {
   EXPECT_TRUE(fs::is_symlink(link)); // the link is kept
 }
 
+TEST(OutputFile, AWriterThatReusesThePathStringStillWritesTheTarget) {
+  // The Gantt writer hands each chart's temporary name on through the string it passed as the
+  // path: the device is still the one written.
+  if (::access("/dev/full", W_OK) != 0) GTEST_SKIP() << "no writable /dev/full";
+  const OutputScratchDir dir;
+  std::string path = dir / "chart.png";
+  fs::create_symlink("/dev/full", path);
+  EXPECT_THROW(write_file_atomically(path,
+                                     [&](const std::string& tmp) {
+                                       path = tmp;
+                                       std::ofstream(tmp) << "picture";
+                                       return true;
+                                     }),
+               std::runtime_error);
+}
+
 TEST(OutputFile, ADeviceThatTakesTheBytesGetsThemAll) {
   EXPECT_NO_THROW(write_text_file("/dev/null", std::string(200000, 'y')));
 }
