@@ -158,6 +158,7 @@ private:
                   std::to_string(kMaxZoneDepth) + " (the machine's zone, a wrapper, their zones)");
     check_cluster(n, name);
     check_unique(n, name);
+    check_platform_children(n, name);
     for (pugi::xml_node c : n.children()) {
       if (c.type() == pugi::node_pcdata || c.type() == pugi::node_cdata)
         fail(c, "text inside <" + name + ">: a platform holds elements only");
@@ -174,6 +175,22 @@ private:
       }
       element(c, zone_depth + (name == "zone" ? 1 : 0));
     }
+  }
+
+  // A platform is its <config> first, then the machine's zone.
+  void check_platform_children(pugi::xml_node n, const std::string& name) {
+    if (name != "platform") return;
+    int zones = 0, seen = 0;
+    for (pugi::xml_node c : n.children()) {
+      if (c.type() != pugi::node_element) continue;
+      const std::string child = c.name();
+      if (child == "config" && seen > 0)
+        fail(c, "<config> after another element: a <platform> opens with its one <config>");
+      if (child == "zone" && ++zones > 1)
+        fail(c, "a second <zone> in <platform>: the machine is one zone (wrap zones in one)");
+      ++seen;
+    }
+    if (zones == 0) fail(n, "<platform> without a <zone>: no machine to model");
   }
 
   // A cluster's torus must hold as many nodes as its radical names.

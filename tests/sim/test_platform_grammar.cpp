@@ -174,6 +174,16 @@ TEST(PlatformGrammar, TextThatIsNotAPlatformIsRefusedWithItsLine) {
       std::string::npos);
   EXPECT_NE(grammar_refusal("<zone/>").find("its root element must be <platform>"),
             std::string::npos);
+  EXPECT_NE(grammar_refusal("<platform version=\"4.1\"/>").find("without a <zone>"),
+            std::string::npos);
+  const std::string zone = "<zone id=\"z\" routing=\"None\"/>";
+  EXPECT_NE(grammar_refusal("<platform version=\"4.1\">" + zone +
+                            "<zone id=\"y\" routing=\"None\"/>" + "</platform>")
+                .find("a second <zone>"),
+            std::string::npos);
+  EXPECT_NE(grammar_refusal("<platform version=\"4.1\">" + zone + "<config/></platform>")
+                .find("<config> after"),
+            std::string::npos);
   EXPECT_NE(grammar_refusal(grammar_replaced(grammar_cube, "version=\"4.1\"", "version=\"3\""))
                 .find("4.1"),
             std::string::npos);
