@@ -19,6 +19,7 @@ esac
 # for --backend mpi.
 PKGS=(build-essential cmake ninja-build ccache pkg-config libsimgrid-dev libglm-dev
       libopenimageio-dev nlohmann-json3-dev libcli11-dev libtinyobjloader-dev libssl-dev libeigen3-dev
+      libpugixml-dev
       python3-matplotlib
       libopenmpi-dev openmpi-bin)
 # The tests: GoogleTest, pajeng (Paje trace checks), clang and its libFuzzer runtime, Mesa's

@@ -18,7 +18,12 @@ namespace {
 // The machine with the what-ifs in force, written as the figures SimGrid reads.
 MachineSpec edited(MachineSpec spec, const Overrides& o, const std::string& command) {
   if (o.latency_s) spec.net.startup_short_s = spec.net.startup_long_s = *o.latency_s;
+  const double one_way_per_byte = spec.net.per_byte_s;
   if (o.bandwidth_Bps) spec.net.per_byte_s = 1.0 / *o.bandwidth_Bps;
+  // The two-way total keeps its ratio to the channel rate, as the --bandwidth flag scales it on a
+  // run (sim/platform_load.cpp, apply_overrides): the Volvox keeps its duplex links.
+  if (spec.net.both_ways_Bps > 0 && spec.net.per_byte_s != one_way_per_byte)
+    spec.net.both_ways_Bps *= one_way_per_byte / spec.net.per_byte_s;
   if (o.per_hop_s) spec.net.per_hop_s = *o.per_hop_s;
   if (o.host_latency_s) spec.net.host_startup_s = *o.host_latency_s;
   if (o.host_bandwidth_Bps) spec.net.host_per_byte_s = 1.0 / *o.host_bandwidth_Bps;

@@ -1,8 +1,10 @@
 // zcube: simulator of 1990s hypercube multicomputers running parallel z-buffer renderers.
 // Exit status: 0 success, 2 usage or input error (one line on stderr naming file, line, reason),
-// 1 anything else.
+// 1 anything else (a failed write to standard output too).
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <sstream>
@@ -44,7 +46,27 @@ static std::string error_line(const char* what) {
   return zc::shorten_echo(zc::one_line(what));
 }
 
+// Where standard output is the result (a platform, a table, a listing), a write that failed (a full
+// disk, /dev/full, a closed descriptor) fails the command: one line, exit status 1. An error
+// already reported keeps its own line and status.
+static int with_output_checked(int status) {
+  errno = 0;
+  std::cout.flush();
+  const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout);
+  if (!failed || status != 0) return status;
+  const int err = errno;
+  errors() << "zcube: error: cannot write standard output"
+           << (err ? std::string(": ") + std::strerror(err) : std::string()) << "\n";
+  return 1;
+}
+
+static int run_command(int argc, char** argv);
+
 int main(int argc, char** argv) {
+  return with_output_checked(run_command(argc, argv));
+}
+
+static int run_command(int argc, char** argv) {
   if (argc < 2) {
     usage(std::cerr);
     return 2;

@@ -14,6 +14,10 @@
 namespace zc {
 
 // Seconds per counted operation, one entry per Counters field (ZC_COUNTER_FIELDS order).
+// The largest node memory zcube models: a node's byte counts are doubles, exact up to 2^53; 1 PiB
+// keeps every sum of them well inside.
+constexpr double kMaxNodeMemory_bytes = 1125899906842624.0; // 2^50
+
 struct CostTable {
 #define ZC_COST_FIELD(f) double f = 0;
   ZC_COUNTER_FIELDS(ZC_COST_FIELD)

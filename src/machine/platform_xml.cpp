@@ -1,6 +1,7 @@
 #include "machine/platform_xml.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -42,9 +43,16 @@ std::string torus_dimensions(Topology topo, int nodes) {
 
 // smpi/or: one section per protocol, "size:offset:factor" (SMPI applies a section to messages
 // larger than its size). The channel latency and the envelope are charged by SimGrid itself.
+// The overhead is chosen so that the reader's sum, overhead + (lat + 16 / bw), is the start-up to
+// the bit (sim/platform_load.cpp): a file written with what-ifs times as the flags do.
 std::string startup_sections(const NetworkParams& n) {
   auto overhead = [&](double startup) {
-    return format_double(startup - n.per_hop_s - kSmpiEnvelopeBytes * n.per_byte_s);
+    const double fixed = n.per_hop_s + kSmpiEnvelopeBytes * n.per_byte_s;
+    const double first = startup - n.per_hop_s - kSmpiEnvelopeBytes * n.per_byte_s;
+    double o = first;
+    for (int step = 0; step < 64 && o + fixed != startup; ++step)
+      o = std::nextafter(o, o + fixed < startup ? HUGE_VAL : -HUGE_VAL);
+    return format_double(o + fixed == startup ? o : first);
   };
   return "0:" + overhead(n.startup_short_s) + ":0;" + format_double(n.short_max_bytes) + ":" +
          overhead(n.startup_long_s) + ":0";
@@ -110,6 +118,8 @@ void duplex_nodes_zone(std::ostringstream& x, const std::string& id, const Netwo
     for (int k = 0; k < channel_count(topo, nodes); ++k)
       if (const int b = neighbour(topo, nodes, a, k); a < b) pairs.insert({a, b});
   const std::string lat = seconds(n.per_hop_s);
+  // The two-way total as zcube reads it: the link's bandwidth itself.
+  const std::string total = with_unit(n.both_ways_Bps, "Bps", {{1e9, "G"}, {1e6, "M"}, {1e3, "k"}});
   auto link = [&](const std::string& name, const std::string& bw, const std::string& latency) {
     x << "      <link id=\"" << name << "\" bandwidth=\"" << bw << "\" latency=\"" << latency
       << "\"/>\n";
@@ -118,7 +128,7 @@ void duplex_nodes_zone(std::ostringstream& x, const std::string& id, const Netwo
   for (auto [a, b] : pairs) {
     link(channel(a, b), rate(n.per_byte_s), lat);
     link(channel(b, a), rate(n.per_byte_s), lat);
-    link(duplex_link_name(a, b), rate(1.0 / n.both_ways_Bps), "0s");
+    link(duplex_link_name(a, b), total, "0s");
   }
   for (auto [a, b] : pairs)
     for (auto [from, to] : {std::pair{a, b}, std::pair{b, a}})

@@ -111,6 +111,9 @@ Overrides what_ifs(const std::map<std::string, std::string>& v, const std::strin
     o.memory_bytes = parse_bytes(v.at("memory"), "--memory", Unit::Required);
     if (!(*o.memory_bytes > 0))
       throw UsageError("--memory '" + v.at("memory") + "': a node needs some memory (> 0 bytes)");
+    if (*o.memory_bytes > kMaxNodeMemory_bytes) // as a platform file's zcube.node_memory
+      throw UsageError("--memory '" + v.at("memory") +
+                       "': above 1 PiB, where a node's byte counts lose precision");
   }
   if (v.count("cost-scale")) {
     o.cost_scale = parse_positive(v.at("cost-scale"), "cost-scale");

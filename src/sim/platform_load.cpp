@@ -10,7 +10,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <set>
 #include <sstream>
 #include <utility>
@@ -20,6 +19,8 @@
 #include "machine/clock_limits.hpp"
 #include "machine/platform_xml.hpp"
 #include "machine/units.hpp"
+#include "sim/platform_grammar.hpp"
+#include "sim/platform_probe.hpp"
 #include "sim/platform_routes.hpp"
 #include "sim/simulation.hpp"
 #include "util/error.hpp"
@@ -43,116 +44,6 @@ namespace {
 
 bool is_duplex_link(const std::string& name) {
   return name.rfind(kDuplexLinkPrefix, 0) == 0;
-}
-
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::size_t at = 0;
-  for (std::size_t next; (next = s.find(sep, at)) != s.npos; at = next + 1)
-    out.push_back(s.substr(at, next - at));
-  out.push_back(s.substr(at));
-  return out;
-}
-
-// SimGrid aborts the process (xbt_assert) on a cluster whose radicals and torus dimensions
-// disagree, and throws a bare "stoi" on a huge dimension: check those attributes first.
-void check_clusters(const std::string& xml, const std::string& label) {
-  static const std::regex tag(R"(<cluster\b[^>]*>)"), attr(R"re(([\w]+)\s*=\s*"([^"]*)")re");
-  static const std::regex integer(R"(\d{1,4})");
-  for (std::sregex_iterator t(xml.begin(), xml.end(), tag), end; t != end; ++t) {
-    std::map<std::string, std::string> a;
-    const std::string text = t->str();
-    for (std::sregex_iterator m(text.begin(), text.end(), attr); m != end; ++m)
-      a[(*m)[1]] = (*m)[2];
-    auto bad = [&](const std::string& name, const std::string& why) {
-      return InputError(label, 0, "cluster " + name + "=\"" + a[name] + "\": " + why);
-    };
-    long radicals = 0;
-    for (const std::string& part : split(a["radical"], ',')) {
-      const auto dash = part.find('-');
-      const std::string lo = part.substr(0, dash),
-                        hi = dash == part.npos ? lo : part.substr(dash + 1);
-      if (!std::regex_match(lo, integer) || !std::regex_match(hi, integer) ||
-          std::stol(hi) < std::stol(lo))
-        throw bad("radical", "expected node numbers a-b with 0 <= a <= b < 10000");
-      radicals += std::stol(hi) - std::stol(lo) + 1;
-    }
-    if (radicals > 1024) throw bad("radical", "zcube simulates at most 1024 nodes");
-    if (a["topology"] != "TORUS") continue;
-    long product = 1;
-    for (const std::string& d : split(a["topo_parameters"], ',')) {
-      if (!std::regex_match(d, integer) || std::stol(d) < 1)
-        throw bad("topo_parameters", "expected dimensions 1..1024 separated by commas");
-      product *= std::stol(d);
-      if (product > 1024) throw bad("topo_parameters", "zcube simulates at most 1024 nodes");
-    }
-    if (product != radicals)
-      throw bad("radical", std::to_string(radicals) + " nodes, but the torus " +
-                               a["topo_parameters"] + " has " + std::to_string(product));
-  }
-}
-
-// SimGrid also aborts ("Not a valid model!") on a zone whose routing it does not know
-// (routing="Full   ", found by tests/fuzz/targets/fuzz_platform.cpp).
-void check_zones(const std::string& xml, const std::string& label) {
-  static const std::regex tag(R"(<zone\b[^>]*>)"),
-      routing(R"re(\brouting\s*=\s*(?:"([^"]*)"|'([^']*)'))re");
-  static const std::set<std::string> known = {"Cluster", "Dijkstra", "DijkstraCache", "Floyd",
-                                              "Full",    "None",     "Vivaldi",       "Wifi"};
-  for (std::sregex_iterator t(xml.begin(), xml.end(), tag), end; t != end; ++t) {
-    const std::string text = t->str();
-    std::smatch m;
-    if (!std::regex_search(text, m, routing)) continue;
-    const std::string r = m[1].matched ? m[1].str() : m[2].str();
-    if (!known.count(r))
-      throw InputError(label, 0,
-                       "zone routing=\"" + r +
-                           "\": not a routing SimGrid knows (Full, Floyd, Dijkstra, DijkstraCache, "
-                           "None, Vivaldi, Cluster, Wifi)");
-  }
-}
-
-// Every figure of a zcube platform carries its unit: SimGrid reads a bare number as base units
-// (bw="2.8" is 2.8 bytes per second, a deprecated form it warns about on a log zcube silences).
-void check_units(const std::string& xml, const std::string& label) {
-  static const std::regex tag(R"(<(host|link|cluster|peer|backbone)\b[^>]*>)");
-  static const std::regex attr(
-      R"re(\b(speed|bandwidth|latency|bw|lat|bb_bw|bb_lat|loopback_bw|loopback_lat|limiter_link)\s*=\s*(?:"([^"]*)"|'([^']*)'))re");
-  static const std::regex bare(R"(\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?\s*)");
-  for (std::sregex_iterator t(xml.begin(), xml.end(), tag), end; t != end; ++t) {
-    const std::string text = t->str();
-    for (std::sregex_iterator m(text.begin(), text.end(), attr); m != end; ++m) {
-      const std::string value = (*m)[2].matched ? (*m)[2].str() : (*m)[3].str();
-      for (const std::string& v : split(value, ',')) // a host's speeds, one per power state
-        if (std::regex_match(v, bare))
-          throw InputError(label, 0,
-                           (*t)[1].str() + " " + (*m)[1].str() + "=\"" + value +
-                               "\": a number without its unit (e.g. 2.8MBps, 10us, 16Mf; "
-                               "platforms/README.md)");
-    }
-  }
-}
-
-// The zcube.* properties of the machine zone: each one zcube reads, and each once (SimGrid keeps
-// the first of two alike; an unknown one, a misspelling, would leave its figure unset).
-void check_zcube_properties(const std::string& xml, const std::string& label) {
-  static const std::regex prop(
-      R"re(<prop\b[^>]*\bid\s*=\s*(?:"(zcube\.[^"]*)"|'(zcube\.[^']*)'))re");
-  std::set<std::string> known = {"zcube.machine",     "zcube.topology",    "zcube.switching",
-                                 "zcube.node_memory", "zcube.os_resident", "zcube.messages"};
-  CostTable cycles;
-  for (auto& [id, v] : cycles.fields())
-    known.insert("zcube.cycles." + id.substr(5));
-  std::set<std::string> seen;
-  for (std::sregex_iterator m(xml.begin(), xml.end(), prop), end; m != end; ++m) {
-    const std::string id = (*m)[1].matched ? (*m)[1].str() : (*m)[2].str();
-    if (!known.count(id))
-      throw InputError(label, 0,
-                       "property '" + id +
-                           "': not one zcube reads (platforms/README.md lists "
-                           "them)");
-    if (!seen.insert(id).second) throw InputError(label, 0, "property '" + id + "' is given twice");
-  }
 }
 
 void load(sg::Engine& e, const std::string& path, const std::string& label) {
@@ -189,33 +80,50 @@ bool is_platform_file(const std::string& machine) {
 
 namespace {
 
-// The platform texts this process has checked, by path. A batch's parent checks each file once
-// before it forks its simulations (check_platform_file), and each forked simulation, finding
-// the same text under the same path, skips the regular-expression scans: they were most of the
-// host time of a short simulation's platform load (a calibration step runs twenty points on one
-// file).
-std::map<std::string, std::string>& checked_texts() {
-  static std::map<std::string, std::string> texts;
-  return texts;
+// The platform files this process has checked, by path: their text and <config> settings. A
+// batch's parent checks each file once before it forks its simulations (check_platform_file), and
+// each forked simulation, finding the same text under the same path, skips the checks and the
+// trial load (a calibration step runs twenty points on one file).
+struct CheckedFile {
+  std::string text;
+  std::vector<std::string> settings; // "--cfg=key:value"
+};
+
+std::map<std::string, CheckedFile>& checked_files() {
+  static std::map<std::string, CheckedFile> files;
+  return files;
 }
+
+// Far larger than any platform zcube writes (a 1024-node Volvox ring is 0.5 MB).
+constexpr std::uintmax_t kMaxPlatformBytes = 64u << 20;
 
 } // namespace
 
 void check_platform_file(const std::string& path) {
   check_input_file(path);
+  std::error_code ec;
+  if (std::filesystem::file_size(path, ec) > kMaxPlatformBytes)
+    throw InputError(path, 0, "larger than 64 MiB: not a platform zcube models");
   std::ifstream f(path);
   std::stringstream text;
   text << f.rdbuf();
   if (!f) throw InputError(path, 0, "cannot read the file");
   std::string xml = text.str();
-  const auto known = checked_texts().find(path);
-  if (known != checked_texts().end() && known->second == xml) return;
-  check_clusters(xml, path);
-  check_zones(xml, path);
-  check_units(xml, path);
-  check_zcube_properties(xml, path);
+  const auto known = checked_files().find(path);
+  if (known != checked_files().end() && known->second.text == xml) return;
+  CheckedFile checked;
+  for (const auto& [key, value] : check_platform_grammar(xml, path))
+    checked.settings.push_back("--cfg=" + key + ":" + value);
   check_declared_routes(xml, path);
-  checked_texts()[path] = std::move(xml);
+  // SimGrid allows one engine a process: a process that has one cannot try the file in a child.
+  if (!sg::Engine::is_initialized()) probe_platform_file(path, checked.settings);
+  checked.text = std::move(xml);
+  checked_files()[path] = std::move(checked);
+}
+
+std::vector<std::string> platform_file_settings(const std::string& path) {
+  check_platform_file(path);
+  return checked_files().at(path).settings;
 }
 
 void load_platform_file(sg::Engine& e, const std::string& path) {
@@ -495,10 +403,19 @@ PlatformModel read_platform(const sg::Engine& e, const std::string& where) {
   const double memory = parse_bytes(zone_prop(z, "zcube.node_memory", where),
                                     where + ": zcube.node_memory", Unit::Required);
   checked(memory, where, "zcube.node_memory", 0, true);
+  if (memory > kMaxNodeMemory_bytes)
+    throw InputError(where, 0,
+                     "zcube.node_memory = " + format_double(memory) +
+                         " bytes: above 1 PiB, where a node's byte counts lose precision");
   // The node operating system's resident size (docs/memory.md); files without it: none.
   if (const char* os = z->get_property("zcube.os_resident")) {
     m.os_resident = parse_bytes(os, where + ": zcube.os_resident", Unit::Required);
     checked(m.os_resident, where, "zcube.os_resident", 0, false);
+    if (m.os_resident > memory)
+      throw InputError(where, 0,
+                       "zcube.os_resident = " + format_double(m.os_resident) +
+                           " bytes: more than the node's memory (zcube.node_memory, " +
+                           format_double(memory) + " bytes)");
   }
   // What a message is charged (NetworkParams::charge_payloads); files without it: the records.
   if (const char* msgs = z->get_property("zcube.messages")) {
@@ -517,8 +434,15 @@ PlatformModel read_platform(const sg::Engine& e, const std::string& where) {
     const double speed =
         checked(h->get_speed(), where, "host '" + h->get_name() + "' speed", 0, true);
     CostTable seconds = cycles;
-    for (auto& [id, v] : seconds.fields())
+    for (auto& [id, v] : seconds.fields()) {
       *v /= speed;
+      if (*v > kMaxDelay_s) // held to the clock's bounds, as a link's figures are
+        throw InputError(where, 0,
+                         "zcube.cycles." + id.substr(5) + " = " + format_double(*v * speed) +
+                             " cycles: " + format_double(*v) + " s an operation on host '" +
+                             h->get_name() + "', above 1 h; slower costs push the simulated " +
+                             "clock past 2^52 ns, where compute times are rounded");
+    }
     m.cost.push_back(seconds);
     m.memory.push_back(memory);
   }

@@ -39,10 +39,16 @@ void load_platform_file(simgrid::s4u::Engine& e, const std::string& path);
 // Whether `machine` (a --machine argument) names a platform file rather than a built-in machine.
 bool is_platform_file(const std::string& machine);
 
-// The checks load_platform_file makes before SimGrid reads the file (InputError naming the file
-// and the reason). A text this process has checked under the same path, or the process that
-// forked it, is not checked again.
+// The checks load_platform_file makes before SimGrid reads the file (InputError naming the file,
+// the line and the reason): the grammar zcube models (sim/platform_grammar.hpp), the declared
+// routes (sim/platform_routes.hpp), then, in a process without a SimGrid engine yet, a trial load
+// in a forked child (sim/platform_probe.hpp). A text this process has checked under the same path,
+// or the process that forked it, is not checked again. Call it before creating the run's engine.
 void check_platform_file(const std::string& path);
+
+// The file's <config> settings as SimGrid arguments ("--cfg=key:value"), checked as --cfg is: a run
+// passes them after zcube's own settings and before the user's --cfg.
+std::vector<std::string> platform_file_settings(const std::string& path);
 
 PlatformModel read_platform(const simgrid::s4u::Engine& e, const std::string& label);
 

@@ -1,11 +1,13 @@
 #include "sim/platform_routes.hpp"
 
-#include <functional>
+#include <algorithm>
 #include <map>
-#include <regex>
 #include <set>
 #include <vector>
 
+#include <pugixml.hpp>
+
+#include "sim/platform_values.hpp"
 #include "util/error.hpp"
 
 namespace zc {
@@ -23,72 +25,87 @@ struct Zone {
 
 struct Route {
   int zone;
+  bool between_zones; // a <zoneRoute>
   std::string src, dst, gw_src, gw_dst;
   bool symmetrical;
+  std::vector<std::string> links;
+  int line; // in the file
 };
-
-std::map<std::string, std::string> attributes(const std::string& text) {
-  static const std::regex attr(R"re(([\w:-]+)\s*=\s*(?:"([^"]*)"|'([^']*)'))re");
-  std::map<std::string, std::string> a;
-  for (std::sregex_iterator m(text.begin(), text.end(), attr), end; m != end; ++m)
-    a[(*m)[1]] = (*m)[2].matched ? (*m)[2].str() : (*m)[3].str();
-  return a;
-}
-
-// The hosts of a cluster: prefix + each number of its radical + suffix.
-std::vector<std::string> cluster_hosts(std::map<std::string, std::string> a) {
-  std::vector<std::string> h;
-  static const std::regex part(R"((\d{1,4})(?:-(\d{1,4}))?)");
-  const std::string& r = a["radical"];
-  for (std::sregex_iterator m(r.begin(), r.end(), part), end; m != end; ++m) {
-    const int lo = std::stoi((*m)[1]), hi = (*m)[2].matched ? std::stoi((*m)[2]) : lo;
-    for (int i = lo; i <= hi && h.size() < 4096; ++i)
-      h.push_back(a["prefix"] + std::to_string(i) + a["suffix"]);
-  }
-  return h;
-}
 
 struct Layout {
   std::vector<Zone> zones;
   std::vector<Route> routes;
+  std::set<std::string> links; // every <link> id
 };
 
-Layout read_layout(std::string xml) {
-  xml = std::regex_replace(xml, std::regex(R"(<!--[\s\S]*?-->)"), "");
-  static const std::regex tag(
-      R"(<\s*(/?)\s*(zone|AS|host|route|zoneRoute|ASroute|bypassRoute|bypassZoneRoute|cluster)\b([^>]*?)(/?)>)");
-  Layout l;
-  std::vector<int> open;
-  for (std::sregex_iterator t(xml.begin(), xml.end(), tag), end; t != end; ++t) {
-    const bool closing = (*t)[1].length() > 0, self_closing = (*t)[4].length() > 0;
-    const std::string name = (*t)[2];
-    if (closing) {
-      if ((name == "zone" || name == "AS") && !open.empty()) open.pop_back();
-      continue;
-    }
-    auto a = attributes((*t)[3]);
-    const int here = open.empty() ? -1 : open.back();
-    if (name == "zone" || name == "AS" || name == "cluster") {
-      Zone z;
-      z.id = a["id"];
-      z.routing = name == "cluster" ? "Cluster" : a["routing"];
-      z.parent = here;
-      if (here >= 0) l.zones[here].points.push_back(z.id);
-      if (name == "cluster")
-        for (const auto& h : cluster_hosts(a))
-          z.points.push_back(h), z.hosts.insert(h);
-      l.zones.push_back(z);
-      if (name != "cluster" && !self_closing) open.push_back(int(l.zones.size()) - 1);
-    } else if (name == "host" && here >= 0) {
-      l.zones[here].points.push_back(a["id"]);
-      l.zones[here].hosts.insert(a["id"]);
-    } else if (name != "bypassRoute" && name != "bypassZoneRoute" && here >= 0) {
-      const std::string sym = a.count("symmetrical") ? a["symmetrical"] : "YES";
-      l.routes.push_back(
-          {here, a["src"], a["dst"], a["gw_src"], a["gw_dst"], sym == "YES" || sym == "yes"});
+// The hosts of a cluster: prefix + each number of its radical + suffix.
+std::vector<std::string> cluster_hosts(pugi::xml_node c) {
+  std::vector<std::string> h;
+  const std::string prefix = c.attribute("prefix").value(), suffix = c.attribute("suffix").value();
+  for (auto [lo, hi] : radical_ranges(c.attribute("radical").value()))
+    for (int i = lo; i <= hi && lo >= 0 && h.size() < 4096; ++i)
+      h.push_back(prefix + std::to_string(i) + suffix);
+  return h;
+}
+
+Route read_route(pugi::xml_node n, int zone, int line) {
+  const std::string sym = n.attribute("symmetrical").as_string("YES");
+  Route r{zone,
+          std::string(n.name()) == "zoneRoute",
+          n.attribute("src").value(),
+          n.attribute("dst").value(),
+          n.attribute("gw_src").value(),
+          n.attribute("gw_dst").value(),
+          sym == "YES" || sym == "yes",
+          {},
+          line};
+  for (pugi::xml_node l : n.children("link_ctn"))
+    r.links.push_back(l.attribute("id").value());
+  return r;
+}
+
+// The line of an element: its offset in the text counted in newlines.
+int line_at(const std::string& xml, pugi::xml_node n) {
+  const std::ptrdiff_t at = std::min<std::ptrdiff_t>(n.offset_debug(), std::ptrdiff_t(xml.size()));
+  return at < 0 ? 0 : 1 + int(std::count(xml.begin(), xml.begin() + at, '\n'));
+}
+
+void read_zone(const std::string& xml, pugi::xml_node n, int parent, Layout& l) {
+  const std::string name = n.name();
+  Zone z;
+  z.id = n.attribute("id").value();
+  z.routing = name == "cluster" ? "Cluster" : n.attribute("routing").value();
+  z.parent = parent;
+  if (parent >= 0) l.zones[parent].points.push_back(z.id);
+  if (name == "cluster")
+    for (const auto& h : cluster_hosts(n))
+      z.points.push_back(h), z.hosts.insert(h);
+  l.zones.push_back(z);
+  if (name == "cluster") return;
+  const int here = int(l.zones.size()) - 1;
+  for (pugi::xml_node c : n.children()) {
+    const std::string child = c.name();
+    if (child == "zone" || child == "cluster") {
+      read_zone(xml, c, here, l);
+    } else if (child == "host") {
+      l.zones[here].points.push_back(c.attribute("id").value());
+      l.zones[here].hosts.insert(c.attribute("id").value());
+    } else if (child == "link") {
+      l.links.insert(c.attribute("id").value());
+    } else if (child == "route" || child == "zoneRoute") {
+      l.routes.push_back(read_route(c, here, line_at(xml, c)));
     }
   }
-  // Every host inside a zone, at any depth.
+}
+
+Layout read_layout(const std::string& xml, const std::string& label) {
+  pugi::xml_document doc;
+  const pugi::xml_parse_result r = doc.load_buffer(xml.data(), xml.size());
+  if (!r) throw InputError(label, 0, std::string("not well-formed XML: ") + r.description());
+  Layout l;
+  for (pugi::xml_node z : doc.child("platform").children("zone"))
+    read_zone(xml, z, -1, l);
+  // Every host inside a zone, at any depth (a child zone comes after its parent).
   for (int z = int(l.zones.size()) - 1; z >= 0; --z)
     if (l.zones[z].parent >= 0)
       l.zones[l.zones[z].parent].hosts.insert(l.zones[z].hosts.begin(), l.zones[z].hosts.end());
@@ -101,18 +118,34 @@ const Zone* zone_named(const Layout& l, const std::string& id) {
   return nullptr;
 }
 
-// A zone route's gateways are hosts of the zones it joins (SimGrid asserts it on first use).
-void check_gateways(const Layout& l, const Route& r, const std::string& label) {
-  const Zone* src = zone_named(l, r.src);
-  const Zone* dst = zone_named(l, r.dst);
-  if (!src || !dst) return; // a route between hosts
-  auto bad = [&](const std::string& gw, const Zone& z, const char* which) {
-    throw InputError(label, 0,
-                     "zoneRoute " + r.src + " -> " + r.dst + ": " + which + "=\"" + gw +
-                         "\" is not a host of zone '" + z.id + "'");
+std::string route_name(const Route& r) {
+  return std::string(r.between_zones ? "zoneRoute " : "route ") + r.src + " -> " + r.dst;
+}
+
+// A route joins points of its own zone (hosts for a <route>, child zones for a <zoneRoute>) over
+// links the file declares; a zone route's gateways are hosts of the zones it joins (SimGrid asserts
+// it on first use).
+void check_ends(const Layout& l, const Route& r, const std::string& label) {
+  const Zone& z = l.zones[r.zone];
+  for (const std::string* end : {&r.src, &r.dst}) {
+    const Zone* child = zone_named(l, *end);
+    const bool point = std::find(z.points.begin(), z.points.end(), *end) != z.points.end();
+    if (!point || (child != nullptr) != r.between_zones)
+      throw InputError(label, r.line,
+                       route_name(r) + ": '" + *end + "' is not a " +
+                           (r.between_zones ? "zone" : "host") + " of zone '" + z.id + "'");
+  }
+  for (const auto& link : r.links)
+    if (!l.links.count(link))
+      throw InputError(label, r.line, route_name(r) + ": no link '" + link + "' in the file");
+  if (!r.between_zones) return;
+  auto bad = [&](const std::string& gw, const Zone& in, const char* which) {
+    throw InputError(label, r.line,
+                     route_name(r) + ": " + which + "=\"" + gw + "\" is not a host of zone '" +
+                         in.id + "'");
   };
-  if (!src->hosts.count(r.gw_src)) bad(r.gw_src, *src, "gw_src");
-  if (!dst->hosts.count(r.gw_dst)) bad(r.gw_dst, *dst, "gw_dst");
+  if (!zone_named(l, r.src)->hosts.count(r.gw_src)) bad(r.gw_src, *zone_named(l, r.src), "gw_src");
+  if (!zone_named(l, r.dst)->hosts.count(r.gw_dst)) bad(r.gw_dst, *zone_named(l, r.dst), "gw_dst");
 }
 
 // Points of `z` reachable from `from` along the zone's routes (or against them).
@@ -131,18 +164,36 @@ std::set<std::string> reach(const std::map<std::string, std::set<std::string>>& 
   return seen;
 }
 
+// The zone's routes as a graph; a route declared twice (a symmetrical one counts both ways) is
+// refused: SimGrid ends the process on it.
+void route_graph(const Layout& l, int zi, std::map<std::string, std::set<std::string>>& next,
+                 std::map<std::string, std::set<std::string>>& prev, const std::string& label) {
+  const Zone& z = l.zones[zi];
+  for (const auto& r : l.routes) {
+    if (r.zone != zi) continue;
+    if (z.routing == "None" || z.routing == "Cluster")
+      throw InputError(label, r.line,
+                       route_name(r) + ": zone '" + z.id + "' (routing " + z.routing +
+                           ") takes no routes");
+    check_ends(l, r, label);
+    if (r.src == r.dst) continue;
+    auto add = [&](const std::string& a, const std::string& b) {
+      if (!next[a].insert(b).second)
+        throw InputError(label, r.line,
+                         "a route " + a + " -> " + b + " is declared twice in zone '" + z.id +
+                             "' (a symmetrical route declares both directions)");
+      prev[b].insert(a);
+    };
+    add(r.src, r.dst);
+    if (r.symmetrical) add(r.dst, r.src);
+  }
+}
+
 void check_zone(const Layout& l, int zi, const std::string& label) {
   const Zone& z = l.zones[zi];
-  static const std::set<std::string> explicit_routes = {"Full", "Floyd", "Dijkstra",
-                                                        "DijkstraCache"};
-  if (!explicit_routes.count(z.routing) || z.points.size() < 2) return;
   std::map<std::string, std::set<std::string>> next, prev;
-  for (const auto& r : l.routes) {
-    if (r.zone != zi || r.src == r.dst) continue;
-    check_gateways(l, r, label);
-    next[r.src].insert(r.dst), prev[r.dst].insert(r.src);
-    if (r.symmetrical) next[r.dst].insert(r.src), prev[r.src].insert(r.dst);
-  }
+  route_graph(l, zi, next, prev, label);
+  if (z.routing == "None" || z.routing == "Cluster" || z.points.size() < 2) return;
   auto missing = [&](const std::string& a, const std::string& b) {
     throw InputError(label, 0,
                      "no route from '" + a + "' to '" + b + "' in zone '" + z.id + "' (routing " +
@@ -166,7 +217,7 @@ void check_zone(const Layout& l, int zi, const std::string& label) {
 } // namespace
 
 void check_declared_routes(const std::string& xml, const std::string& label) {
-  const Layout l = read_layout(xml);
+  const Layout l = read_layout(xml, label);
   for (int z = 0; z < int(l.zones.size()); ++z)
     check_zone(l, z, label);
 }

@@ -130,12 +130,8 @@ bool value_fits(const Setting& s, const std::string& v) {
 void check_cfg(const std::string& arg) {
   const std::string setting = arg.substr(6);
   const auto colon = setting.find(':');
-  const std::string key = setting.substr(0, colon), value = setting.substr(colon + 1);
-  const Setting* s = find_setting(key);
-  if (!s)
-    throw UsageError("--cfg " + setting + ": not a SimGrid setting zcube runs with (" +
-                     known_keys() + ")");
-  if (!value_fits(*s, value)) throw UsageError("--cfg " + setting + ": expected " + range_text(*s));
+  const std::string why = setting_problem(setting.substr(0, colon), setting.substr(colon + 1));
+  if (!why.empty()) throw UsageError("--cfg " + setting + ": " + why);
 }
 
 // "--log=category.thres:level": the thresholds of SimGrid's log categories. Appenders and layouts
@@ -184,6 +180,12 @@ std::string reason(std::string text) {
 }
 
 } // namespace
+
+std::string setting_problem(const std::string& key, const std::string& value) {
+  const Setting* s = find_setting(key);
+  if (!s) return "not a SimGrid setting zcube runs with (" + known_keys() + ")";
+  return value_fits(*s, value) ? "" : "expected " + range_text(*s);
+}
 
 void check_simgrid_args(const std::vector<std::string>& args) {
   if (args.empty()) return;

@@ -8,6 +8,10 @@
 
 namespace zc {
 
+// Empty when `key` is a SimGrid setting zcube runs with and `value` is in its range (a platform
+// file's <config> is held to the same list), else why not.
+std::string setting_problem(const std::string& key, const std::string& value);
+
 // UsageError naming the first setting SimGrid refuses; nothing when `args` is empty.
 void check_simgrid_args(const std::vector<std::string>& args);
 

@@ -116,12 +116,18 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
   std::string platform_label;
   const bool is_file = is_platform_file(cfg.machine);
   std::string builtin_xml;
+  std::vector<std::string> file_settings; // the file's <config>, checked as --cfg is
   if (is_file) {
-    check_input_file(cfg.machine);
+    check_platform_file(cfg.machine); // before this process has an engine: it tries the file
+    file_settings = platform_file_settings(cfg.machine);
     platform_label = cfg.machine;
   } else {
     check_node_count(cfg.topology, cfg.nodes);
-    builtin_xml = platform_xml(machine_spec(cfg.machine), cfg.nodes, cfg.topology);
+    // --cpu-scale is the host speed clock / k, as `zcube platform --cpu-scale` writes it: a file
+    // written with it runs as the flag does, to the bit (costs are cycles / speed either way).
+    PlatformEdits edits;
+    edits.cpu_scale = cfg.overrides.cpu_scale.value_or(1.0);
+    builtin_xml = platform_xml(machine_spec(cfg.machine), cfg.nodes, cfg.topology, edits);
     platform_label = "zcube platform --machine " + cfg.machine + " --nodes " +
                      std::to_string(cfg.nodes) + " --topology " + topology_name(cfg.topology);
   }
@@ -144,6 +150,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
   // (the ranks' stacks are 8 MiB, far more than the renderers use); --cfg=contexts/guard-size:1,
   // passed after this, puts them back.
   if (cfg.fidelity == Fidelity::Flow) args.push_back("--cfg=contexts/guard-size:0");
+  args.insert(args.end(), file_settings.begin(), file_settings.end());
   args.insert(args.end(), cfg.simgrid_args.begin(), cfg.simgrid_args.end());
   std::vector<char*> argv;
   for (auto& a : args)
@@ -160,7 +167,9 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
   if (is_file && cfg.nodes != pm.nodes && cfg.nodes != 0)
     throw UsageError("--nodes " + std::to_string(cfg.nodes) + " but " + platform_label +
                      " models " + std::to_string(pm.nodes) + " nodes");
-  apply_overrides(cfg.overrides, pm, e);
+  Overrides overrides = cfg.overrides;
+  if (!is_file) overrides.cpu_scale.reset(); // in the built-in machine's host speed already
+  apply_overrides(overrides, pm, e);
   if (cfg.draw) apply_model_draw(*cfg.draw, pm);
   if (model) *model = pm;
   const int P = pm.nodes;

@@ -1,6 +1,8 @@
 #include "util/output_file.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
+#include <sys/vfs.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -29,6 +31,65 @@ std::string temporary_beside(const fs::path& target) {
   return (target.parent_path() / name).string();
 }
 
+// Why `path` (which exists and is not a regular file) cannot be an output: a FIFO or a socket
+// found in the file system would block the write until a reader comes. A device (/dev/null) and
+// a pipe this process was given (/dev/stdout under a shell pipe) are written in place.
+std::string special_output_problem(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) return "";
+  if (S_ISSOCK(st.st_mode)) return "is a socket, not a file";
+  if (!S_ISFIFO(st.st_mode)) return "";
+  struct statfs fs {};
+  constexpr long kPipeFs = 0x50495045; // an anonymous pipe, not a FIFO of the file system
+  if (::statfs(path.c_str(), &fs) == 0 && long(fs.f_type) == kPipeFs) return "";
+  return "is a FIFO: zcube writes its outputs to files (opening a FIFO waits for a reader)";
+}
+
+// Writes the file `tmp` to `path`, a device or a pipe, every write and the close checked.
+void copy_to_device(const std::string& tmp, const std::string& path) {
+  auto fail = [&](int err) {
+    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(err));
+  };
+  const int in = ::open(tmp.c_str(), O_RDONLY | O_CLOEXEC);
+  if (in < 0) fail(errno);
+  const int out = ::open(path.c_str(), O_WRONLY | O_CLOEXEC | O_NONBLOCK);
+  if (out < 0) {
+    const int err = errno;
+    ::close(in);
+    fail(err);
+  }
+  ::fcntl(out, F_SETFL, ::fcntl(out, F_GETFL) & ~O_NONBLOCK);
+  char buf[1 << 16];
+  int err = 0;
+  for (ssize_t n; !err && (n = ::read(in, buf, sizeof buf)) != 0;) {
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) err = errno;
+    for (ssize_t at = 0; !err && at < n;) {
+      const ssize_t w = ::write(out, buf + at, std::size_t(n - at));
+      if (w < 0 && errno != EINTR) err = errno;
+      if (w > 0) at += w;
+    }
+  }
+  ::close(in);
+  if (::close(out) != 0 && !err) err = errno;
+  if (err) fail(err);
+}
+
+// A directory of this process's own under the system's temporary directory, removed with what it
+// holds when the object goes.
+struct PrivateDir {
+  std::string path;
+  PrivateDir() {
+    std::string t = (fs::temp_directory_path() / "zcube-out-XXXXXX").string();
+    if (!::mkdtemp(t.data())) throw std::runtime_error("cannot create a temporary directory");
+    path = t;
+  }
+  ~PrivateDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
 } // namespace
 
 void check_output_path(const std::string& path, const std::string& flag) {
@@ -42,7 +103,11 @@ void check_output_path(const std::string& path, const std::string& flag) {
   // The file is replaced by a rename, so its directory must take a new file (tried, then
   // removed); a device such as /dev/null is written in place.
   const auto st = fs::status(path, ec);
-  if (fs::exists(st) && !fs::is_regular_file(st)) return;
+  if (fs::exists(st) && !fs::is_regular_file(st)) {
+    const std::string why = special_output_problem(path);
+    if (!why.empty()) throw UsageError(flag + " '" + path + "': " + why);
+    return;
+  }
   const std::string probe = temporary_beside(path);
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
   if (fd < 0)
@@ -94,14 +159,25 @@ void prepare_output_dir(const std::string& dir, const std::string& flag) {
   check_output_path((fs::path(dir) / "x").string(), flag); // it takes new files
 }
 
-void write_file_atomically(const std::string& path,
+void write_file_atomically(const std::string& path_given,
                            const std::function<bool(const std::string& tmp)>& produce) {
+  // A copy: `produce` may change the string `path_given` refers to (the Gantt charts' writer
+  // hands each chart's temporary name on through it).
+  const std::string path = path_given;
   std::error_code ec;
   fs::path target = path;
   if (fs::is_symlink(target, ec)) target = fs::weakly_canonical(target, ec); // keep the link
   const auto st = fs::status(target, ec);
-  if (fs::exists(st) && !fs::is_regular_file(st)) { // a device or a FIFO: nothing to replace
-    if (!produce(path)) throw std::runtime_error("cannot write '" + path + "'");
+  if (fs::exists(st) && !fs::is_regular_file(st)) { // a device or a pipe: nothing to replace
+    const std::string why = special_output_problem(path);
+    if (!why.empty()) throw std::runtime_error("cannot write '" + path + "': " + why);
+    // Produced as a file first, then copied with every write checked: the writers' own
+    // libraries do not all report a write that fails on a device (/dev/full).
+    const PrivateDir dir;
+    const std::string tmp =
+        (fs::path(dir.path) / ("out" + fs::path(path).extension().string())).string();
+    if (!produce(tmp)) throw std::runtime_error("cannot write '" + path + "'");
+    copy_to_device(tmp, path);
     return;
   }
   const std::string tmp = temporary_beside(target);

@@ -11,7 +11,8 @@
 namespace zc {
 
 // UsageError naming `flag` when `path` cannot be created: its directory is missing, not a
-// directory or not writable, or the path is itself a directory. An empty path (flag not given) is
+// directory or not writable, or the path is itself a directory, a FIFO or a socket (writing would
+// wait for a reader). An empty path (flag not given) is
 // fine.
 void check_output_path(const std::string& path, const std::string& flag);
 
@@ -29,7 +30,8 @@ void prepare_output_dir(const std::string& dir, const std::string& flag = "--out
 // Calls `produce(tmp)` to write the whole file at `tmp`, a temporary path beside `path` with the
 // same extension (image and plot writers choose the format by it), then renames it to `path`. When
 // `produce` throws or returns false, the temporary file is removed and std::runtime_error names
-// `path`. A path that is not a regular file (/dev/stdout, a FIFO) is written in place.
+// `path`. A device or a pipe this process was given (/dev/null, /dev/stdout) is produced in a
+// temporary directory and copied to it, every write checked; a FIFO or a socket is refused.
 void write_file_atomically(const std::string& path,
                            const std::function<bool(const std::string& tmp)>& produce);
 

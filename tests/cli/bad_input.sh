@@ -43,7 +43,8 @@ check reproduce-unknown-paper "paper" "$zcube" reproduce frobnicate
 # zcube platform -o names the reason it cannot write (checked before any work).
 check platform-output-no-dir "directory '/nonexistent' does not exist" "$zcube" platform -o /nonexistent/x.xml
 check platform-output-is-dir "--output" "$zcube" platform -o "$tmp"
-# Bad platform files: one line naming the file and the attribute, exit 2, before the
+# Bad platform files: one line naming the file (and the line, when one is at fault) and the
+# attribute, exit 2, before the
 # simulation; the generated platform of a built-in machine never leaves a temporary file.
 for f in "$data"/bad_platform/*.xml; do
   name=$(basename "$f")
@@ -63,7 +64,8 @@ for f in "$data"/bad_platform/*.xml; do
   channel_*) attr="link 'ch-0-1'" ;;
   *) attr='.' ;;
   esac
-  check "platform $name" "$name: .*\($attr\)" "$zcube" run --machine "$f" --algorithm sequential --size 8x8
+  check "platform $name" "$name:\([0-9]*:\)\? .*\($attr\)" "$zcube" run --machine "$f" \
+    --algorithm sequential --size 8x8
 done
 mkdir -p "$tmp/t"
 for flags in "--cost-scale 1e-300" "--nodes 3" "--latency -1us" "--algorithm bogus"; do

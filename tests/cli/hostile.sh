@@ -65,7 +65,7 @@ usage no-from-node0 "no-from-node0.xml: no route" "$zcube" run --machine \
   "$tmp/no-from-node0.xml" --algorithm sequential "${small[@]}"
 sed 's/<zoneRoute src="ipsc2-cube-8-nodes" dst="ipsc2-cube-8-host" gw_src="node0"/<zoneRoute src="ipsc2-cube-8-nodes" dst="ipsc2-cube-8-host" gw_src="srm"/' \
   "$tmp/ipsc2.xml" >"$tmp/bad-gateway.xml"
-usage bad-gateway "bad-gateway.xml: .*gw_src" "$zcube" run --machine "$tmp/bad-gateway.xml" \
+usage bad-gateway "bad-gateway.xml:[0-9]*: .*gw_src" "$zcube" run --machine "$tmp/bad-gateway.xml" \
   --algorithm host-initiated --fidelity flow "${small[@]}"
 ok whole-ring "identical to the sequential renderer's: true" "$zcube" run --machine "$tmp/ring.xml" \
   --algorithm elastic --fidelity flow "${small[@]}"
@@ -77,8 +77,8 @@ sed 's|\(.*zcube.cycles.spans.*\)|\1\n\1|' "$tmp/ipsc2.xml" >"$tmp/twice.xml"
 sed 's/value="cube"/value="torus"/' "$tmp/ipsc2.xml" >"$tmp/torus.xml"
 sed 's/<link id="ch-0-1" bandwidth="1.7MBps"/<link id="ch-0-1" bandwidth="2MBps"/' "$tmp/ring.xml" \
   >"$tmp/edited.xml"
-usage bare-bw "bare-bw.xml: .*bw=\"2.8\".*unit" "$zcube" run --machine "$tmp/bare-bw.xml" "${small[@]}"
-usage bare-speed "bare-speed.xml: .*speed" "$zcube" run --machine "$tmp/bare-speed.xml" "${small[@]}"
+usage bare-bw "bare-bw.xml:[0-9]*: .*bw=\"2.8\".*unit" "$zcube" run --machine "$tmp/bare-bw.xml" "${small[@]}"
+usage bare-speed "bare-speed.xml:[0-9]*: .*speed" "$zcube" run --machine "$tmp/bare-speed.xml" "${small[@]}"
 usage misspelt-property "zcube.os_resdent" "$zcube" run --machine "$tmp/misspelt.xml" "${small[@]}"
 usage property-twice "zcube.cycles.spans' is given twice" "$zcube" run --machine "$tmp/twice.xml" \
   "${small[@]}"

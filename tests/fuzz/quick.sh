@@ -9,6 +9,7 @@ secs=${3:-3}
 fail=0
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+export TMPDIR=$tmp # the targets' input files (fuzz_common.hpp) go where the trap removes them
 for exe in "$bin"/fuzz_*; do
   [ -x "$exe" ] || continue
   t=${exe##*/fuzz_}

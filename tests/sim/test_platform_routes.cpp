@@ -14,11 +14,11 @@ namespace {
 
 // Three hosts joined by one-way routes a -> b -> c -> a (a cycle: every host reaches every other)
 // in a zone of `routing`, plus the routes `extra` and a host zone linked both ways.
-std::string
-platform(const std::string& routing, const std::string& routes,
-         const std::string& zone_routes =
-             R"(<zoneRoute src="n" dst="h" gw_src="a" gw_dst="srm"><link_ctn id="up"/></zoneRoute>
-<zoneRoute src="h" dst="n" gw_src="srm" gw_dst="a"><link_ctn id="down"/></zoneRoute>)") {
+std::string platform(
+    const std::string& routing, const std::string& routes,
+    const std::string& zone_routes =
+        R"(<zoneRoute src="n" dst="h" gw_src="a" gw_dst="srm" symmetrical="NO"><link_ctn id="up"/></zoneRoute>
+<zoneRoute src="h" dst="n" gw_src="srm" gw_dst="a" symmetrical="NO"><link_ctn id="down"/></zoneRoute>)") {
   return R"(<?xml version='1.0'?><platform version="4.1"><zone id="m" routing="Full">
 <zone id="n" routing=")" +
          routing + R"("><host id="a" speed="1Mf"/><host id="b" speed="1Mf"/>
@@ -81,6 +81,33 @@ TEST(PlatformRoutes, ZoneRoutesJoinTheZonesBothWaysThroughTheirOwnHosts) {
       R"(<zoneRoute src="n" dst="h" gw_src="srm" gw_dst="srm"><link_ctn id="up"/></zoneRoute>
 <zoneRoute src="h" dst="n" gw_src="srm" gw_dst="a"><link_ctn id="down"/></zoneRoute>)";
   EXPECT_NE(refusal(platform("Dijkstra", cycle, bad_gateway)).find("gw_src=\"srm\""),
+            std::string::npos);
+}
+
+TEST(PlatformRoutes, ARouteGivenTwiceIsRefused) {
+  // SimGrid ended the process on each of these (a crash in sg_platf_new_route, an assertion).
+  for (const std::string& routes :
+       {cycle + route("a", "b"),
+        route("a", "b", true) + route("b", "a") + route("b", "c", true) + route("c", "a", true)}) {
+    SCOPED_TRACE(routes);
+    EXPECT_NE(refusal(platform("Full", routes)).find("is declared twice"), std::string::npos)
+        << refusal(platform("Full", routes));
+  }
+  const std::string symmetrical_zone_routes =
+      R"(<zoneRoute src="n" dst="h" gw_src="a" gw_dst="srm"><link_ctn id="up"/></zoneRoute>
+<zoneRoute src="h" dst="n" gw_src="srm" gw_dst="a"><link_ctn id="down"/></zoneRoute>)";
+  EXPECT_NE(
+      refusal(platform("Dijkstra", cycle, symmetrical_zone_routes)).find("h -> n is declared"),
+      std::string::npos);
+}
+
+TEST(PlatformRoutes, RoutesJoinPointsOfTheirZoneOverDeclaredLinks) {
+  EXPECT_NE(refusal(platform("Dijkstra", cycle + route("a", "x"))).find("'x' is not a host"),
+            std::string::npos);
+  std::string unknown = route("a", "b");
+  unknown.replace(unknown.find("id=\"l\""), 6, "id=\"nope\"");
+  EXPECT_NE(refusal(platform("Dijkstra", unknown + route("b", "c") + route("c", "a")))
+                .find("no link 'nope'"),
             std::string::npos);
 }
 

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
@@ -17,7 +18,12 @@ int main(int argc, char** argv) {
   if (argc == 3 && std::strcmp(argv[1], "run") == 0 && std::strcmp(argv[2], "--list") == 0) {
     for (const auto& a : zc::algorithms()) // as cmd_run.cpp lists them
       std::cout << a.name << "  " << a.summary << "\n";
-    return 0;
+    errno = 0;
+    if (std::cout.flush() && std::fflush(stdout) == 0 && !std::ferror(stdout)) return 0;
+    const int err = errno; // the listing is the result: a write that failed fails the command
+    std::cerr << "zcube: error: cannot write standard output"
+              << (err ? std::string(": ") + std::strerror(err) : std::string()) << "\n";
+    return 1;
   }
   namespace fs = std::filesystem;
   std::error_code ec;

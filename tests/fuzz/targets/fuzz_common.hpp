@@ -18,9 +18,11 @@ namespace zc::fuzz {
 // each) is refused at once instead of running into libFuzzer's per-input timeout.
 constexpr std::uint64_t kTriangleBudget = std::uint64_t(1) << 18;
 
+// Under $TMPDIR when it is set (ctest fuzz.quick sets it to a directory it removes), else /tmp.
 inline const std::string& temp_dir() {
   static const std::string dir = [] {
-    std::string t = "/tmp/zcube-fuzz-XXXXXX";
+    const char* base = std::getenv("TMPDIR");
+    std::string t = std::string(base && *base ? base : "/tmp") + "/zcube-fuzz-XXXXXX";
     if (!mkdtemp(t.data())) std::abort();
     return t;
   }();

@@ -1,13 +1,13 @@
 // libFuzzer target: platform files, the way zcube run --machine FILE.xml reads them
-// (src/sim/platform_load.cpp): zcube's cluster, unit, property and route checks, SimGrid's parser,
-// then read_platform's checks of every figure and route. An input may start with lines of SimGrid
-// settings ("--cfg=name:value", "--log=..."), checked as zcube run checks them
-// (sim/simgrid_args.hpp) and, when accepted, given to the engine that loads the file. SimGrid
-// allows one engine per process and aborts the process on some input it rejects (xbt_assert), so
-// every input is loaded in a forked child; a child that dies (signal, sanitizer report) or throws
-// anything but InputError/UsageError is a finding, reported by aborting the parent. The child
-// copies its coverage counters back before it exits, so libFuzzer's guidance sees the parser and
-// the checks as if they had run in-process.
+// (src/sim/platform_load.cpp): zcube's grammar and route checks and its trial load in a child of
+// its own, SimGrid's parser, then read_platform's checks of every figure and route. An input may
+// start with lines of SimGrid settings ("--cfg=name:value", "--log=..."), checked as zcube run
+// checks them (sim/simgrid_args.hpp) and, when accepted, given to the engine that loads the file.
+// SimGrid allows one engine per process and aborts the process on some input it rejects
+// (xbt_assert), so every input is loaded in a forked child; a child that dies (signal, sanitizer
+// report) or throws anything but InputError/UsageError is a finding, reported by aborting the
+// parent. The child copies its coverage counters back before it exits, so libFuzzer's guidance sees
+// the parser and the checks as if they had run in-process.
 #include <elf.h>
 #include <fcntl.h>
 #include <link.h>
@@ -100,6 +100,7 @@ std::vector<std::string> split_settings(std::string& text) {
     argv.push_back(a.data());
   int argc = int(argv.size());
   try {
+    zc::check_platform_file(path); // as a run does: before the engine, with its trial load
     zc::declare_platform_flags();
     simgrid::s4u::Engine e(&argc, argv.data());
     zc::load_platform_file(e, path);
