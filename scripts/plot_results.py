@@ -157,6 +157,13 @@ def curves(ax, groups, xkey, ykey, colors, ideal=None, logy=False, styles=None, 
         pts = sorted((number(r[xkey]), number(r[ykey])) for r in rs if number(r[ykey]) is not None)
         ax.plot([p[0] * shift for p in pts], [p[1] for p in pts], label=label,
                 color=colors[label], **style)
+        # The 90 % band of the uncertainty model (docs/uncertainty.md), where the table has one.
+        band = sorted((number(r[xkey]), number(r.get(ykey + "_p05")), number(r.get(ykey + "_p95")))
+                      for r in rs if number(r.get(ykey + "_p05")) is not None
+                      and number(r.get(ykey + "_p95")) is not None)
+        if band:
+            ax.fill_between([b[0] * shift for b in band], [b[1] for b in band],
+                            [b[2] for b in band], color=colors[label], alpha=0.15, lw=0)
         xs = [number(r[xkey]) * shift for r in rs if r[ykey] == "oom"]
         if xs:
             oom.append((label, xs))
@@ -236,11 +243,17 @@ def kurc(d):
                 sel = [r for r in t2
                        if r["nodes"] == "16" and r["scene"] == s and r["scheme"] == scheme]
                 pred = {r["phase"]: number(r["predicted_ms"]) or 0 for r in sel}
+                lo = {r["phase"]: number(r.get("predicted_p05_ms")) for r in sel}
+                hi = {r["phase"]: number(r.get("predicted_p95_ms")) for r in sel}
                 paper = {r["phase"]: number(r["paper_ms"]) or 0 for r in sel}
                 b1 = b2 = 0
                 for j, ph in enumerate(phases):
                     c = "C%d" % j
                     ax.bar(i - w / 2, pred[ph], w, bottom=b1, color=c, label=ph if i == 0 else None)
+                    if lo.get(ph) is not None and hi.get(ph) is not None:  # the phase's 90 % band
+                        ax.errorbar(i - w / 2, b1 + pred[ph],
+                                    yerr=[[pred[ph] - lo[ph]], [hi[ph] - pred[ph]]],
+                                    color="black", lw=0.8, capsize=2)
                     ax.bar(i + w / 2, paper[ph], w, bottom=b2, color=c, hatch="//", alpha=0.55,
                            label="paper (hatched)" if i == 0 and j == 0 else None)
                     b1 += pred[ph]
@@ -250,7 +263,8 @@ def kurc(d):
             ax.set_xlabel("scene")
             ax.set_ylabel("time per phase (ms)")
             ax.legend(fontsize=8)
-        fig.suptitle("Kurç et al. Table 2 on the iPSC/2 model: zcube (left bar) vs paper (hatched)")
+        fig.suptitle("Kurç et al. Table 2 on the iPSC/2 model: zcube (left bar, 90 % band per phase) "
+                     "vs paper (hatched)")
         save(fig, os.path.join(d, "kurc", "table2.png"))
     su = rows(os.path.join(d, "kurc", "speedup.csv"))
     if su:

@@ -65,10 +65,13 @@ std::string bands_and_sensitivity_text(const nlohmann::json& j) {
         << b.value("why_simulated", "") << "), virtual time " << band_text(b["virtual_time_s"]);
       if (b.contains("timed_s")) o << ", timed region " << band_text(b["timed_s"]);
       o << "\n";
+      if (b.value("reordered_draws", 0) > 0)
+        o << "  " << b["reordered_draws"].get<int>()
+          << " draws kept a receive from any source in its recorded order although another "
+             "sender's message came first under them (an approximation: docs/uncertainty.md)\n";
       if (b.value("failed_draws", 0) > 0)
         o << "  " << b["failed_draws"].get<int>()
-          << " draws left out: out of node memory or a receive from any source that changes its "
-             "sender under them\n";
+          << " draws left out: out of node memory under them\n";
     }
   }
   if (j.contains("sensitivity")) o << sensitivity_text(j["sensitivity"]);

@@ -14,6 +14,7 @@
 
 #include "repro/background_job.hpp"
 #include "repro/calibrate.hpp"
+#include "repro/claims.hpp"
 #include "repro/gantt_chart.hpp"
 #include "repro/json_file.hpp"
 #include "repro/plot_script.hpp"
@@ -256,7 +257,10 @@ int reproduce(const ReproduceOptions& o) {
                        "' (kurc, charles, blazek, compositing or all)");
   }
   const bool all = o.papers.size() == 4;
-  if (all) plans.push_back(fidelity_plan(o));
+  if (all) {
+    plans.push_back(fidelity_plan(o));
+    plans.push_back(claims_plan(o)); // after every paper's plan: it reads their runs
+  }
   // The plans name their charts .png: drawn, and named in the READMEs, in the format asked.
   for (auto& p : plans)
     for (auto& g : p.gantt)
@@ -354,7 +358,8 @@ int reproduce(const ReproduceOptions& o) {
     // tables) keeps its plots too, drawn by the run that wrote its tables.
     std::vector<std::string> parts;
     for (std::size_t k = 0; k < plans.size(); ++k)
-      parts.push_back(plans[k].name.empty() ? "fidelity" : dirs[k].substr(o.out.size() + 1));
+      if (plans[k].plotted)
+        parts.push_back(plans[k].name.empty() ? "fidelity" : dirs[k].substr(o.out.size() + 1));
     plots->draw(plot_arguments(parts, charts, o, *plot_dir));
   }
   // The reports are written: freed before the calibration, when it runs here, forks its runs (a

@@ -59,6 +59,7 @@ struct PaperPlan {
   // Why writing into dir would lose results it holds (e.g. the --full tables), or empty. Such a
   // plan writes beside it, into dir + "-quick", unless overwrite is set.
   std::function<std::string(const std::string& dir)> would_degrade;
+  bool plotted = true; // scripts/plot_results.py draws its files (a part named after the plan)
 };
 
 PaperPlan kurc_plan(const ReproduceOptions& o);
@@ -84,6 +85,18 @@ int reproduce(const ReproduceOptions& o);
 SimConfig repro_config(const std::string& machine, int nodes, const std::string& algorithm,
                        const std::string& scene, int size);
 double virtual_s(const nlohmann::json& report);
+// The draws of the uncertainty model every point of the papers' tables is priced under
+// (docs/uncertainty.md): the same draws for every point, so that a speed-up's band pairs them.
+inline constexpr int kReproduceDraws = 100;
+void with_bands(PaperPlan& plan);
+// The draws' values of virtual_s (the timed region, else the whole run), of a phase's critical
+// node, or of the sum of some phases, one a draw, NaN where a draw failed; empty without bands.
+std::vector<double> band_virtual_s(const nlohmann::json& report);
+std::vector<double> band_phases_s(const nlohmann::json& report,
+                                  const std::vector<std::string>& phases);
+// The 5th and 95th percentiles of num[d] / den[d] over the draws both have (NaN, NaN if none).
+std::pair<double, double> ratio_band(const std::vector<double>& num,
+                                     const std::vector<double>& den);
 bool ok(const nlohmann::json& report);
 bool out_of_memory(const nlohmann::json& report);
 // The README section that shows a plan's Gantt charts.

@@ -1,6 +1,7 @@
 // Blazek 1991 on the simulated iPSC/2: speed-up and efficiency of the four decompositions
 // (thesis ch. VI, Figures 12-19) on random spheres, 1..32 nodes.
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <set>
 
@@ -53,7 +54,9 @@ std::vector<GanttChart> blazek_gantt() {
 std::string write_blazek(const std::vector<int>& spheres, const Reports& reps,
                          const std::string& dir) {
   const bool full = spheres.size() > sphere_counts(false).size();
-  Table su{{"method", "spheres", "nodes", "virtual_s", "speedup", "efficiency"}, {}};
+  Table su{{"method", "spheres", "nodes", "virtual_s", "speedup", "speedup_p05", "speedup_p95",
+            "efficiency"},
+           {}};
   Table host{{"method", "spheres", "nodes", "triangles", "wall_s", "peak_rss_bytes"}, {}};
   std::string tables;
   for (const auto& m : kMethods) {
@@ -69,12 +72,15 @@ std::string write_blazek(const std::vector<int>& spheres, const Reports& reps,
                   num(r["host"].value("peak_rss_bytes", 0.0))});
         if (!ok(r)) {
           const std::string st = out_of_memory(r) ? "oom" : "error";
-          su.add({m.name, std::to_string(s), std::to_string(n), st, st, st});
+          su.add({m.name, std::to_string(s), std::to_string(n), st, st, "", "", st});
           row.push_back(st);
           continue;
         }
         const double t = virtual_s(r), sp = seq / t;
-        su.add({m.name, std::to_string(s), std::to_string(n), num(t), num(sp, 4), num(sp / n, 4)});
+        const auto [lo, hi] = ratio_band(band_virtual_s(reps.at(seq_key(s))), band_virtual_s(r));
+        su.add({m.name, std::to_string(s), std::to_string(n), num(t), num(sp, 4),
+                std::isfinite(lo) ? num(lo, 4) : "", std::isfinite(hi) ? num(hi, 4) : "",
+                num(sp / n, 4)});
         row.push_back(fixed(sp, 2) + " (" + fixed(sp / n, 2) + ")");
       }
       md.add(row);
@@ -182,6 +188,7 @@ PaperPlan blazek_plan(const ReproduceOptions& o) {
     return write_blazek(spheres, r, dir);
   };
   p.would_degrade = [spheres](const std::string& dir) { return would_degrade(spheres, dir); };
+  with_bands(p);
   return p;
 }
 

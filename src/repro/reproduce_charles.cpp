@@ -46,7 +46,9 @@ const Table1Row kTable1[] = {
     {1304, 650, 26, 63}, {1056, 610, 24, 21}, {822, 597, 24, 22}, {1056, 632, 25, 149}};
 
 std::string write_charles(const Reports& reps, const std::string& dir) {
-  Table su{{"scene", "size", "topology", "nodes", "virtual_s", "speedup", "paper_speedup"}, {}};
+  Table su{{"scene", "size", "topology", "nodes", "virtual_s", "speedup", "speedup_p05",
+            "speedup_p95", "paper_speedup"},
+           {}};
   Table md{{"scene", "size", "topology", "P=1", "P=2", "P=4", "P=8", "P=16"}, {}};
   Table cmp{{"figure", "paper", "predicted", "error"}, {}};
   for (const auto& c : kCases) {
@@ -60,7 +62,7 @@ std::string write_charles(const Reports& reps, const std::string& dir) {
         if (!ok(r) ||
             !ok(seq_r)) { // no time to divide (the time a failed run stopped at is not one)
           const std::string st = out_of_memory(ok(r) ? seq_r : r) ? "oom" : "error";
-          su.add({c.scene, std::to_string(c.size), topo, std::to_string(n), st, st, ""});
+          su.add({c.scene, std::to_string(c.size), topo, std::to_string(n), st, st, "", "", ""});
           mdrow.push_back(st);
           continue;
         }
@@ -74,8 +76,9 @@ std::string write_charles(const Reports& reps, const std::string& dir) {
                            " nodes (§6)",
                        paper, fixed(sp, 2), percent((sp - f.speedup) / f.speedup)});
             }
-        su.add(
-            {c.scene, std::to_string(c.size), topo, std::to_string(n), num(t), num(sp, 4), paper});
+        const auto [lo, hi] = ratio_band(band_virtual_s(seq_r), band_virtual_s(r));
+        su.add({c.scene, std::to_string(c.size), topo, std::to_string(n), num(t), num(sp, 4),
+                std::isfinite(lo) ? num(lo, 4) : "", std::isfinite(hi) ? num(hi, 4) : "", paper});
         mdrow.push_back(fixed(sp, 2));
       }
       md.add(mdrow);
@@ -165,6 +168,7 @@ PaperPlan charles_plan(const ReproduceOptions& o) {
   }
   p.gantt = charles_gantt();
   p.write = write_charles;
+  with_bands(p);
   return p;
 }
 

@@ -26,6 +26,18 @@ double phase_ms(const nlohmann::json& r, const std::string& phase) {
   return 0;
 }
 
+// The phase's band (docs/uncertainty.md), "p05" or "p95", in ms; "" without one.
+std::string phase_band_ms(const nlohmann::json& r, const std::string& phase, const char* q) {
+  for (const auto& p : r["phases"])
+    if (p["name"] == phase && p.contains("bands"))
+      return fixed(p["bands"][q].get<double>() * 1e3, 1);
+  return "";
+}
+
+std::string band_num(double v) {
+  return std::isfinite(v) ? num(v, 4) : "";
+}
+
 // The paper's rendering time: the three phases of Table 2 (the round-robin distribution of the
 // triangles before them and the picture's output after them are not part of it).
 double render_s(const nlohmann::json& r) {
@@ -60,7 +72,9 @@ const KurcPhaseFigure* paper_figure(const std::string& scene, const std::string&
 
 std::string write_kurc(const Reports& reps, const std::string& dir) {
   // table2.csv and its README table.
-  Table t2{{"nodes", "scene", "scheme", "phase", "predicted_ms", "paper_ms"}, {}};
+  Table t2{{"nodes", "scene", "scheme", "phase", "predicted_ms", "predicted_p05_ms",
+            "predicted_p95_ms", "paper_ms"},
+           {}};
   Table md{
       {"scene", "scheme", "phase", "P=8 predicted", "P=16 predicted", "P=16 paper", "P=16 error"},
       {}};
@@ -71,8 +85,10 @@ std::string write_kurc(const Reports& reps, const std::string& dir) {
         const auto& r = reps.at(t2_key(n, s, sch));
         for (const auto& ph : kurc_phases()) {
           const KurcPhaseFigure* f = n == 16 ? paper_figure(s, sch, ph) : nullptr;
-          t2.add({std::to_string(n), s, sch, ph,
-                  out_of_memory(r) ? "oom" : fixed(phase_ms(r, ph), 1), f ? num(f->ms) : ""});
+          const bool oom = out_of_memory(r);
+          t2.add({std::to_string(n), s, sch, ph, oom ? "oom" : fixed(phase_ms(r, ph), 1),
+                  oom ? "" : phase_band_ms(r, ph, "p05"), oom ? "" : phase_band_ms(r, ph, "p95"),
+                  f ? num(f->ms) : ""});
         }
       }
   for (const auto& s : kurc_scenes())
@@ -91,7 +107,9 @@ std::string write_kurc(const Reports& reps, const std::string& dir) {
 
   // speedup.csv and measures.csv.
   // render_s, not virtual_s: the three phases only (virtual_s is the whole run everywhere else).
-  Table su{{"scheme", "scene", "size", "nodes", "render_s", "speedup"}, {}};
+  Table su{
+      {"scheme", "scene", "size", "nodes", "render_s", "speedup", "speedup_p05", "speedup_p95"},
+      {}};
   Table me{{"scheme", "scene", "size", "nodes", "concurrent_volume_bytes", "load_imbalance", "tpg",
             "tpf"},
            {}};
@@ -104,12 +122,15 @@ std::string write_kurc(const Reports& reps, const std::string& dir) {
         for (int n : kKurcNodes) {
           const auto& r = reps.at(su_key(sch, s, size, n));
           if (!ok(r) || !ok(base)) {
-            su.add({sch, s, std::to_string(size), std::to_string(n), "oom", "oom"});
+            su.add({sch, s, std::to_string(size), std::to_string(n), "oom", "oom", "", ""});
             if (n > 1) mdrow.push_back("oom");
             continue;
           }
           const double t = render_s(r), sp = render_s(base) / t;
-          su.add({sch, s, std::to_string(size), std::to_string(n), num(t), num(sp, 4)});
+          const auto [lo, hi] =
+              ratio_band(band_phases_s(base, kurc_phases()), band_phases_s(r, kurc_phases()));
+          su.add({sch, s, std::to_string(size), std::to_string(n), num(t), num(sp, 4), band_num(lo),
+                  band_num(hi)});
           if (n > 1) mdrow.push_back(fixed(sp, 2));
           const auto& k = r.value("kurc", nlohmann::json::object());
           me.add({sch, s, std::to_string(size), std::to_string(n),
@@ -145,7 +166,8 @@ std::string write_kurc(const Reports& reps, const std::string& dir) {
           "Speed-up = T(`scanline`, 1 node) / T(scheme, P), T the sum of the three phases above "
           "on both sides (`render_s`; `virtual_s` is the whole run in every other file, or the "
           "paper's timed region where one is marked): neither counts the distribution of the "
-          "triangles nor the output of the picture. The baseline `scanline` is the paper's sequential rendering of §1-§2 "
+          "triangles nor the output of the picture. The baseline `scanline` is the paper's "
+          "sequential rendering of §1-§2 "
           "with every polygon on one 4 MB node: span lists and the modified scanline z-buffer, "
           "no merging and no frame buffer (docs/papers.md). `oom`: a node (or the baseline) "
           "runs out of its 4 MB, operating system included (docs/memory.md), as the paper's "
@@ -184,6 +206,7 @@ PaperPlan kurc_plan(const ReproduceOptions& o) {
               {su_key(sch, s, size, n), repro_config("ipsc2", n, sch, scene_path(o, s), size)});
   p.gantt = kurc_gantt();
   p.write = write_kurc;
+  with_bands(p);
   return p;
 }
 

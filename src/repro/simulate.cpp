@@ -18,6 +18,7 @@
 #include "repro/paper_figures.hpp"
 #include "run/report.hpp"
 #include "scene/load.hpp"
+#include "sim/bands.hpp"
 #include "sim/platform_load.hpp"
 #include "sim/replay.hpp"
 #include "sim/simulation.hpp"
@@ -282,11 +283,24 @@ std::string replay_key(const SimConfig& c) {
   return program_inputs(c).dump();
 }
 
+// The point's bands (sim/bands.hpp) when it asks for them, from the trace its run recorded or
+// replayed.
+void attach_bands(const SimConfig& cfg, SimResult& r, const CallTrace* t, const PlatformModel& pm) {
+  if (cfg.band_draws <= 0 || !r.ok) return;
+  const BandsRequest req{.draws = cfg.band_draws, .seed = cfg.band_seed};
+  const std::string why =
+      t ? add_bands(r.report, *t, pm, cfg, req) : "the run read the clock or was not recorded";
+  if (!why.empty())
+    r.report["bands"] = {{"method", "unavailable"}, {"why", why}, {"draws", cfg.band_draws}};
+}
+
 nlohmann::json record_point(const SimConfig& cfg, std::vector<std::uint8_t>* trace) {
-  if (!trace) return simulate_point(cfg);
+  if (!trace && cfg.band_draws <= 0) return simulate_point(cfg);
   std::shared_ptr<CallTrace> t;
-  SimResult r = record_simulation(with_batch_args(cfg), cached_scene(cfg), t);
-  if (t) *trace = t->serialize();
+  PlatformModel pm;
+  SimResult r = record_simulation(with_batch_args(cfg), cached_scene(cfg), t, &pm);
+  if (t && trace) *trace = t->serialize();
+  attach_bands(cfg, r, t.get(), pm);
   attach_paper_figures(r.report);
   return r.report;
 }
@@ -294,8 +308,11 @@ nlohmann::json record_point(const SimConfig& cfg, std::vector<std::uint8_t>* tra
 std::optional<nlohmann::json> replay_point(const SimConfig& cfg,
                                            const std::vector<std::uint8_t>& trace) {
   auto t = std::make_shared<const CallTrace>(CallTrace::parse(trace));
-  std::optional<SimResult> r = replay_simulation(with_batch_args(cfg), cached_scene(cfg), t);
+  PlatformModel pm;
+  std::optional<SimResult> r =
+      replay_simulation(with_batch_args(cfg), cached_scene(cfg), t, nullptr, &pm);
   if (!r) return std::nullopt;
+  attach_bands(cfg, *r, t.get(), pm);
   attach_paper_figures(r->report);
   return std::move(r->report);
 }
@@ -354,6 +371,7 @@ void check_platform_files(const std::vector<SimConfig>& points) {
 } // namespace
 
 nlohmann::json simulate_point(const SimConfig& cfg) {
+  if (cfg.band_draws > 0) return record_point(cfg, nullptr);
   SimResult r = run_simulation(with_batch_args(cfg), cached_scene(cfg));
   attach_paper_figures(r.report);
   return r.report;

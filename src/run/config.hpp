@@ -46,6 +46,10 @@ struct SimConfig {
   // One draw of the uncertainty model (machine/uncertainty.hpp) priced on top of the machine and
   // its what-ifs; null: the nominal machine.
   std::shared_ptr<const ModelDraw> draw;
+  // Draws of the uncertainty model priced after the run, in its process (sim/bands.hpp: the
+  // report's "bands"); 0: none. The same seed gives every point of a study the same draws.
+  int band_draws = 0;
+  std::uint64_t band_seed = 1;
 };
 
 struct SimResult {

@@ -77,38 +77,50 @@ nlohmann::json quantiles(const std::vector<double>& v) {
   return {{"p05", quantile(v, 0.05)}, {"p50", quantile(v, 0.5)}, {"p95", quantile(v, 0.95)}};
 }
 
-// Writes the band of every figure from the draws' figures into the report.
+// The finite values of v (a failed draw's are NaN).
+std::vector<double> finite(const std::vector<double>& v) {
+  std::vector<double> f;
+  for (double x : v)
+    if (std::isfinite(x)) f.push_back(x);
+  return f;
+}
+
+// Writes the band of every figure from the draws' figures into the report. `values` keep one
+// entry a draw, in draw order, null where the draw failed, so that a study pairs its runs' draws.
 void write_bands(nlohmann::json& report, const std::vector<Figures>& draws, nlohmann::json b) {
+  const double none = std::nan("");
   std::vector<double> vt, ts;
   std::map<std::string, std::vector<double>> ph;
   int failed = 0;
+  for (const auto& p : report["phases"])
+    ph[p["name"].get<std::string>()];
   for (const Figures& f : draws) {
-    if (!f.ok) {
-      ++failed;
-      continue;
+    failed += !f.ok;
+    vt.push_back(f.ok ? f.virtual_time_s : none);
+    ts.push_back(f.ok && f.timed_s >= 0 ? f.timed_s : none);
+    for (auto& [n, v] : ph) {
+      const auto it = f.phases.find(n);
+      v.push_back(f.ok && it != f.phases.end() ? it->second : none);
     }
-    vt.push_back(f.virtual_time_s);
-    if (f.timed_s >= 0) ts.push_back(f.timed_s);
-    for (const auto& [n, v] : f.phases)
-      ph[n].push_back(v);
   }
   b["failed_draws"] = failed;
-  if (vt.empty()) {
+  if (finite(vt).empty()) {
     b["method"] = "unavailable";
     b["why"] = "no draw ran to its end";
     report["bands"] = std::move(b);
     return;
   }
-  b["virtual_time_s"] = quantiles(vt);
-  if (!ts.empty()) b["timed_s"] = quantiles(ts);
+  b["virtual_time_s"] = quantiles(finite(vt));
   b["values"] = {{"virtual_time_s", vt}};
-  if (!ts.empty()) b["values"]["timed_s"] = ts;
+  if (!finite(ts).empty()) {
+    b["timed_s"] = quantiles(finite(ts));
+    b["values"]["timed_s"] = ts;
+  }
   for (auto& p : report["phases"]) {
-    const std::string name = p["name"];
-    if (auto it = ph.find(name); it != ph.end()) {
-      p["bands"] = quantiles(it->second);
-      b["values"]["phases"][name] = it->second;
-    }
+    const auto& v = ph.at(p["name"].get<std::string>());
+    if (finite(v).empty()) continue;
+    p["bands"] = quantiles(finite(v));
+    b["values"]["phases"][p["name"].get<std::string>()] = v;
   }
   report["bands"] = std::move(b);
 }
@@ -157,15 +169,17 @@ std::string add_bands(nlohmann::json& report, const CallTrace& trace, const Plat
            " (relative)";
   if (req.draws > 0) {
     std::vector<Figures> draws;
-    int diverged = 0;
+    int diverged = 0, reordered = 0;
     for (const ModelDraw& d : model_draws(pm.machine, req.draws, req.seed)) {
       const RetimedRun r = retime(trace, m, d);
       diverged += r.status == RetimedRun::Status::Diverged;
+      reordered += r.reordered_receives > 0;
       draws.push_back(figures_of(r));
     }
     nlohmann::json b = band_header(cfg, req, pm.machine, "retimed");
     b["agreement_rel"] = agreement;
     b["diverged_draws"] = diverged;
+    b["reordered_draws"] = reordered;
     write_bands(report, draws, std::move(b));
   }
   if (req.sensitivity) report["sensitivity"] = sensitivity(trace, m, req.step);

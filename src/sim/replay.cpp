@@ -203,13 +203,13 @@ SimResult record_simulation(const SimConfig& cfg, const Scene* preloaded,
 }
 
 std::optional<SimResult> replay_simulation(const SimConfig& cfg, const Scene* preloaded,
-                                           std::shared_ptr<const CallTrace> trace,
-                                           std::string* why) {
+                                           std::shared_ptr<const CallTrace> trace, std::string* why,
+                                           PlatformModel* model) {
   divergence().clear();
   SimConfig c = cfg;
   c.custom = std::make_shared<const Algorithm>(
       replaying_algorithm(cfg.custom ? *cfg.custom : find_algorithm(cfg.algorithm), trace));
-  SimResult r = run_simulation(c, preloaded);
+  SimResult r = run_simulation(c, preloaded, model);
   if (!divergence().empty()) {
     if (why) *why = divergence();
     return std::nullopt;

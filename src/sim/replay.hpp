@@ -29,6 +29,7 @@ SimResult record_simulation(const SimConfig& cfg, const Scene* preloaded,
 // recorded run's.
 std::optional<SimResult> replay_simulation(const SimConfig& cfg, const Scene* preloaded,
                                            std::shared_ptr<const CallTrace> trace,
-                                           std::string* why = nullptr);
+                                           std::string* why = nullptr,
+                                           PlatformModel* model = nullptr);
 
 } // namespace zc

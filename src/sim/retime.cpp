@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 #include <queue>
+#include <unordered_map>
 
 #include "comm/comm.hpp"
 #include "sim/sim_cost.hpp"
@@ -70,8 +71,7 @@ public:
   Retimer(const CallTrace& t, const RetimeMachine& m, const ModelDraw& d)
       : t_(t), m_(m), net_params_(apply_draw(m.net, d)),
         net_(net_params_, m.topology, m.nodes, m.fidelity, {}, unused_cost_),
-        circuit_(m.fidelity == Fidelity::Circuit), ranks_(t.ranks.size()),
-        inbox_(t.ranks.size(), std::vector<std::deque<Msg*>>(t.ranks.size())) {
+        circuit_(m.fidelity == Fidelity::Circuit), ranks_(t.ranks.size()), inbox_(t.ranks.size()) {
     for (std::size_t r = 0; r < t.ranks.size(); ++r) {
       const CostTable& c = m.cost[std::min(r, m.cost.size() - 1)];
       cost_.push_back(apply_draw(r < std::size_t(m.nodes) ? c : m.cost.front(), d));
@@ -158,9 +158,10 @@ private:
   std::vector<double> phase_factor_;
   double no_phase_factor_ = 1;
   std::vector<Rank> ranks_;
-  std::vector<std::vector<std::deque<Msg*>>> inbox_; // [dst][src], in send order
+  std::vector<std::vector<Msg*>> inbox_; // by destination, pending in send order
+  std::vector<char> seen_;               // receive()'s scratch: sources met
   std::deque<Msg> msgs_;
-  std::map<std::pair<int, int>, std::uint32_t> channel_ids_;
+  std::unordered_map<std::uint64_t, std::uint32_t> channel_ids_; // (from, to) -> index
   std::vector<Channel> channels_;
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> events_;     // ranks
   std::priority_queue<Event, std::vector<Event>, std::greater<Event>> net_events_; // network
@@ -272,41 +273,42 @@ bool Retimer::await(int r, Rank& k, const Msg* m) {
 // Inbox::take's rule: from one source its oldest message of the tag; from any source, among the
 // sources' oldest ones, the first arrived (the lower source on a tie).
 bool Retimer::receive(int r, Rank& k, const Call& c) {
+  // The pending messages in send order: a source's first one with the tag is its oldest.
   auto& box = inbox_[std::size_t(r)];
-  auto oldest = [&](int src) -> std::deque<Msg*>::iterator {
-    auto& q = box[std::size_t(src)];
-    return std::find_if(q.begin(), q.end(), [&](const Msg* m) { return m->tag == c.tag; });
-  };
   int got = -1;
-  double wake = kUnknown;
-  const int first = c.peer == kAnySource ? 0 : c.peer;
-  const int last = c.peer == kAnySource ? int(box.size()) - 1 : c.peer;
-  double best = kUnknown;
-  for (int s = first; s <= last; ++s) {
-    auto it = oldest(s);
-    if (it == box[std::size_t(s)].end()) continue;
-    const double a = (*it)->arrival;
-    if (a <= now_ && (got < 0 || a < best)) {
-      got = s;
-      best = a;
+  double wake = kUnknown, best = kUnknown;
+  std::size_t recorded = box.size(); // the recorded sender's oldest, if pending
+  seen_.assign(ranks_.size(), 0);
+  for (std::size_t i = 0; i < box.size(); ++i) {
+    const Msg* m = box[i];
+    if (m->tag != c.tag || seen_[std::size_t(m->src)]) continue;
+    seen_[std::size_t(m->src)] = 1;
+    if (m->src == c.from) recorded = i;
+    if (c.peer != kAnySource && m->src != c.peer) continue;
+    if (m->arrival <= now_ &&
+        (got < 0 || m->arrival < best || (m->arrival == best && m->src < got))) {
+      got = m->src;
+      best = m->arrival;
     }
-    wake = std::min(wake, a);
+    wake = std::min(wake, m->arrival);
   }
-  if (got < 0) {
+  // Under a draw, a receive from any source may find another sender's message first; the calls
+  // after it could then differ from the recorded ones, so the retimer keeps the recorded sender
+  // and counts the receive as reordered (the report says how many draws had one).
+  const bool reordered = c.peer == kAnySource && got >= 0 && got != c.from;
+  if (recorded == box.size() || box[recorded]->arrival > now_) {
     k.wait = Rank::Wait::Recv;
-    if (wake != kUnknown) schedule_rank(r, after(wake - now_));
-    k.recv_src = c.peer;
+    k.recv_src = c.peer == kAnySource && got < 0 ? c.peer : c.from;
     k.recv_tag = c.tag;
+    const double a = recorded == box.size() ? kUnknown : box[recorded]->arrival;
+    if (got < 0 && wake != kUnknown)
+      schedule_rank(r, after(wake - now_));
+    else if (a != kUnknown)
+      schedule_rank(r, after(a - now_));
     return false;
   }
-  if (got != c.from) {
-    diverge(RetimedRun::Status::Diverged,
-            "node " + std::to_string(r) + ": a receive from any source got node " +
-                std::to_string(got) + ", recorded node " + std::to_string(c.from));
-    return false;
-  }
-  auto& q = box[std::size_t(got)];
-  q.erase(oldest(got));
+  if (reordered) ++result_.reordered_receives;
+  box.erase(box.begin() + std::ptrdiff_t(recorded));
   k.wait = Rank::Wait::None;
   return true;
 }
@@ -329,7 +331,7 @@ Msg* Retimer::post(int r, const Call& c) {
   m.dst = c.peer;
   m.tag = c.tag;
   m.sent_at = now_;
-  inbox_[std::size_t(c.peer)][std::size_t(r)].push_back(&m);
+  inbox_[std::size_t(c.peer)].push_back(&m);
   net_.holds(r, c.peer, double(charged), m.holds);
   if (!circuit_) {
     double t = m.sent_at;
@@ -360,7 +362,8 @@ void Retimer::arrived(Msg& m) {
 }
 
 std::uint32_t Retimer::channel_id(std::pair<int, int> c) {
-  auto [it, fresh] = channel_ids_.try_emplace(c, std::uint32_t(channels_.size()));
+  const std::uint64_t key = (std::uint64_t(std::uint32_t(c.first)) << 32) | std::uint32_t(c.second);
+  auto [it, fresh] = channel_ids_.try_emplace(key, std::uint32_t(channels_.size()));
   if (fresh) channels_.emplace_back();
   return it->second;
 }

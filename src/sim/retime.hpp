@@ -11,7 +11,8 @@
 // It covers the analytic and circuit fidelities on links whose directions do not slow each other
 // down; the flow fidelity (SimGrid's bandwidth sharing) and the Volvox's T800 links are left to
 // full simulations (retimable() says why). A receive from any source that would get another source
-// under a draw than the recorded one diverges: that draw's calls could differ.
+// under a draw than the recorded one keeps the recorded source, and the draw counts it: that
+// draw's calls could have differed, so its times are an approximation the report owns up to.
 #include <string>
 #include <vector>
 
@@ -38,6 +39,9 @@ struct RetimeMachine {
 struct RetimedRun {
   enum class Status { Ok, OutOfMemory, Diverged } status = Status::Ok;
   std::string why;
+  // Receives from any source that found another sender's message first under this draw and were
+  // kept in the recorded order (the program's later calls could have differed).
+  int reordered_receives = 0;
   double virtual_time_s = 0;
   double timed_s = -1;                  // -1: no node marked a timed region
   std::vector<std::string> phase_names; // in first-entered order over the ranks
