@@ -198,7 +198,10 @@ ModelDraw scaled_parameter(std::size_t p, double factor) {
 }
 
 std::vector<ModelDraw> model_draws(const std::string& machine, int n, std::uint64_t seed) {
-  const UncertaintySpec& s = uncertainty_spec(machine);
+  return model_draws(uncertainty_spec(machine), n, seed);
+}
+
+std::vector<ModelDraw> model_draws(const UncertaintySpec& s, int n, std::uint64_t seed) {
   std::vector<ModelDraw> out;
   for (int i = 0; i < n; ++i) {
     const auto d = std::uint64_t(i);

@@ -68,6 +68,7 @@ ModelDraw scaled_parameter(std::size_t p, double factor);
 
 // Draws 0..n-1 of the model of `machine` (seed fixes them; the same for every run).
 std::vector<ModelDraw> model_draws(const std::string& machine, int n, std::uint64_t seed);
+std::vector<ModelDraw> model_draws(const UncertaintySpec& spec, int n, std::uint64_t seed);
 
 // Quantiles of `v` (linear interpolation between order statistics, as numpy's default).
 double quantile(std::vector<double> v, double q);

@@ -534,7 +534,10 @@ nlohmann::json calibrate(const CalibrationOptions& opt) {
   fit["rms_rel_error"] = {{"kurc_prior", rms(e_prior)}, {"kurc_fitted", rms(e_fit)}};
   fit["charles"] = charles_prediction(f.k, o);
   fit["plausibility"] = plausibility(f.k);
-  if (o.cross_validate) fit["crossval"] = cross_validate(fitted, o);
+  if (o.cross_validate) {
+    fit["crossval"] = cross_validate(fitted, o);
+    fit["crossval"]["coverage"] = fold_coverage(fit["crossval"], o);
+  }
   if (o.select) fit["selection"] = selection;
   fit["settings"] = {{"ridge", o.ridge},
                      {"fixed_groups", o.fixed_groups},

@@ -44,6 +44,11 @@ struct CalibrationOptions {
 // "iterations", "rms_rel_error", "settings"}.
 nlohmann::json calibrate(const CalibrationOptions& opt);
 
+// The share of the cross-validation's held-out figures inside their 50, 80 and 90 % bands of the
+// uncertainty model, and the 90 % bands' median half-width (repro/calibrate_coverage.cpp);
+// `crossval` is calibrate()'s "crossval".
+nlohmann::json fold_coverage(const nlohmann::json& crossval, const CalibrationOptions& opt);
+
 // Writes results/calibration/{fit.json, targets.csv, crossval.csv, plausibility.csv,
 // charles_prediction.csv, README.md} under out_dir.
 void write_calibration_results(const nlohmann::json& fit, const std::string& out_dir);

@@ -222,6 +222,25 @@ void readme_fit(std::ostream& md, const nlohmann::json& fit) {
      << " after the fit (a fit residual, not a\nvalidation).\n\n";
 }
 
+// How often the uncertainty model's bands hold the folds' held-out figures (docs/uncertainty.md).
+void readme_coverage(std::ostream& md, const nlohmann::json& c) {
+  const double i90 = c["inside_90"].get<double>(), hw = c["median_half_width_90"].get<double>();
+  const bool met = i90 >= 0.85 && i90 <= 0.95 && hw < 0.12;
+  md << "**Coverage of the bands** (docs/uncertainty.md): each held-out scene's six figures "
+        "priced under "
+     << c["draws"].get<int>()
+     << " draws of the uncertainty model at the fold's multipliers, the structural error taken "
+        "from the other five folds' errors only. Share of the "
+     << c["figures"].get<int>() << " held-out figures inside their band:\n\n"
+     << "| band | figures inside |\n|---|---|\n"
+     << "| 50 % | " << plain_pct(c["inside_50"]) << " |\n"
+     << "| 80 % | " << plain_pct(c["inside_80"]) << " |\n"
+     << "| 90 % | " << plain_pct(i90) << " |\n\n"
+     << "Median half-width of the 90 % bands: " << plain_pct(hw)
+     << ". Goal: 85-95 % inside the 90 % bands with a median half-width under 12 %: "
+     << (met ? "met." : "not met (the gap is in the figures above).") << "\n\n";
+}
+
 void readme_validation(std::ostream& md, const nlohmann::json& fit) {
   md << "## Validation on figures the fit did not see\n\n"
         "`calibration.png` (drawn by `zcube reproduce`): every target's predicted phase time "
@@ -253,6 +272,7 @@ void readme_validation(std::ostream& md, const nlohmann::json& fit) {
       md << "| " << f["fold"].get<std::string>() << " | " << ks << " | " << cells << " |\n";
     }
     md << "\n";
+    if (cv.contains("coverage")) readme_coverage(md, cv["coverage"]);
   }
   md << "**Charles et al. §6 on the iPSC/860** (`charles_prediction.csv`), teapot 512x512, "
         "cube, elastic against the\nsequential renderer on one node; nothing of Charles et al. "

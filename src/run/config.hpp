@@ -50,6 +50,8 @@ struct SimConfig {
   // report's "bands"); 0: none. The same seed gives every point of a study the same draws.
   int band_draws = 0;
   std::uint64_t band_seed = 1;
+  // The uncertainty model the draws come from; null: the machine's (uncertainty_spec).
+  std::shared_ptr<const UncertaintySpec> band_spec;
 };
 
 struct SimResult {

@@ -170,7 +170,8 @@ std::string add_bands(nlohmann::json& report, const CallTrace& trace, const Plat
   if (req.draws > 0) {
     std::vector<Figures> draws;
     int diverged = 0, reordered = 0;
-    for (const ModelDraw& d : model_draws(pm.machine, req.draws, req.seed)) {
+    const UncertaintySpec& spec = cfg.band_spec ? *cfg.band_spec : uncertainty_spec(pm.machine);
+    for (const ModelDraw& d : model_draws(spec, req.draws, req.seed)) {
       const RetimedRun r = retime(trace, m, d);
       diverged += r.status == RetimedRun::Status::Diverged;
       reordered += r.reordered_receives > 0;
