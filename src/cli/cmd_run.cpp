@@ -207,6 +207,8 @@ static int cmd_run(std::vector<std::string> args) {
   // A speed-up figure of a paper needs the sequential time on the same machine: one more
   // simulation, in its own process and before this one (a forked child must not inherit a
   // SimGrid engine).
+  if (backend == "mpi" && (bands.draws > 0 || bands.sensitivity))
+    throw UsageError("--bands, --sensitivity: the MPI backend measures; it has no model to draw");
   if (backend == "mpi") {
 #ifdef ZCUBE_HAVE_MPI
     MpiSession mpi;
@@ -228,8 +230,6 @@ static int cmd_run(std::vector<std::string> args) {
     const auto sr = run_simulation_isolated(seq);
     if (sr.value("status", "") == "ok") seq_s = virtual_s(sr);
   }
-  if ((bands.draws > 0 || bands.sensitivity) && backend == "mpi")
-    throw UsageError("--bands, --sensitivity: the MPI backend measures; it has no model to draw");
   SimResult r =
       bands.draws > 0 || bands.sensitivity ? run_with_bands(cfg, bands) : run_simulation(cfg);
   attach_paper_figures(r.report);

@@ -29,6 +29,9 @@ check size-zero "--size" "$zcube" render --size 0x10 --image "$tmp/x.png"
 check size-huge "--size" "$zcube" render --size 100000x100000 --image "$tmp/x.png"
 check size-garbage "--size" "$zcube" render --size banana --image "$tmp/x.png"
 check missing-scene "nope.json" "$zcube" render --scene "$tmp/nope.json" --image "$tmp/x.png"
+check bands-mpi "--bands" "$zcube" run --backend mpi --bands 10 --size 32x32
+check bands-negative "--bands" "$zcube" run --bands -1 --size 32x32
+check sensitivity-plot-ext "--sensitivity-plot" "$zcube" run --sensitivity-plot "$tmp/t.txt" --size 32x32
 check unknown-command "unknown command" "$zcube" frobnicate
 # The reproduction and study commands.
 check sweep-empty-item "--nodes" "$zcube" sweep --nodes 1,,2 --out "$tmp/sw"
