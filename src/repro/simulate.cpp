@@ -288,10 +288,10 @@ std::string replay_key(const SimConfig& c) {
 void attach_bands(const SimConfig& cfg, SimResult& r, const CallTrace* t, const PlatformModel& pm) {
   if (cfg.band_draws <= 0 || !r.ok) return;
   const BandsRequest req{.draws = cfg.band_draws, .seed = cfg.band_seed};
-  const std::string why =
-      t ? add_bands(r.report, *t, pm, cfg, req) : "the run read the clock or was not recorded";
-  if (!why.empty())
-    r.report["bands"] = {{"method", "unavailable"}, {"why", why}, {"draws", cfg.band_draws}};
+  if (t)
+    add_bands(r.report, *t, pm, cfg, req);
+  else
+    mark_unavailable(r.report, req, "the run read the clock: its calls may depend on the times");
 }
 
 nlohmann::json record_point(const SimConfig& cfg, std::vector<std::uint8_t>* trace) {

@@ -157,16 +157,28 @@ nlohmann::json sensitivity(const CallTrace& t, const RetimeMachine& m, double st
 
 } // namespace
 
+void mark_unavailable(nlohmann::json& report, const BandsRequest& req, const std::string& why) {
+  if (req.draws > 0 && !report.contains("bands"))
+    report["bands"] = {{"method", "unavailable"}, {"why", why}, {"draws", req.draws}};
+  if (req.sensitivity && !report.contains("sensitivity"))
+    report["sensitivity"] = {{"method", "unavailable"}, {"why", why}};
+}
+
 std::string add_bands(nlohmann::json& report, const CallTrace& trace, const PlatformModel& pm,
                       const SimConfig& cfg, const BandsRequest& req) {
   const RetimeMachine m = retime_machine(pm, cfg);
-  if (std::string why = retimable(m); !why.empty()) return why;
+  std::string why = retimable(m);
   // The retimer must give the simulated run's own figures before it prices anything else.
   const double agreement =
-      disagreement(figures_of(retime(trace, m, ModelDraw{})), figures_of(report));
-  if (!(agreement <= 1e-9))
-    return "the retimed run differs from the simulation by " + std::to_string(agreement) +
-           " (relative)";
+      why.empty() ? disagreement(figures_of(retime(trace, m, ModelDraw{})), figures_of(report))
+                  : 0.0;
+  if (why.empty() && !(agreement <= 1e-9))
+    why = "the retimed run differs from the simulation by " + std::to_string(agreement) +
+          " (relative)";
+  if (!why.empty()) {
+    mark_unavailable(report, req, why);
+    return why;
+  }
   if (req.draws > 0) {
     std::vector<Figures> draws;
     int diverged = 0, reordered = 0;
@@ -189,14 +201,15 @@ std::string add_bands(nlohmann::json& report, const CallTrace& trace, const Plat
 
 namespace {
 
-// Whether a run of cfg can be retimed, as far as the configuration says before it runs (a
-// platform file's links are known only once it is loaded).
-bool expect_retimable(const SimConfig& cfg) {
-  if (cfg.fidelity == Fidelity::Flow) return false;
-  if (is_platform_file(cfg.machine)) return true;
-  NetworkParams n = machine_spec(cfg.machine).net;
-  if (cfg.overrides.bandwidth_Bps) n.per_byte_s = 1.0 / *cfg.overrides.bandwidth_Bps;
-  return !n.half_duplex_limited();
+// Why a run of cfg cannot be retimed, as far as the configuration says before it runs ("" when
+// it can; a platform file's links are known only once it is loaded).
+std::string not_retimable(const SimConfig& cfg) {
+  NetworkParams n;
+  if (!is_platform_file(cfg.machine)) {
+    n = machine_spec(cfg.machine).net;
+    if (cfg.overrides.bandwidth_Bps) n.per_byte_s = 1.0 / *cfg.overrides.bandwidth_Bps;
+  }
+  return retimable(cfg.fidelity, n);
 }
 
 // Every draw a simulation of its own, in child processes: the first records, the others replay.
@@ -234,31 +247,26 @@ std::vector<Figures> simulated_draws(const SimConfig& cfg, const BandsRequest& r
 } // namespace
 
 SimResult run_with_bands(const SimConfig& cfg, const BandsRequest& req, const Scene* preloaded) {
+  // Draws that need simulations of their own run before this process has an engine.
+  const std::string simulated_why = not_retimable(cfg);
   std::vector<Figures> simulated;
-  const bool retimed = expect_retimable(cfg);
-  std::string machine = is_platform_file(cfg.machine) ? std::string() : cfg.machine;
-  if (!retimed && req.draws > 0) simulated = simulated_draws(cfg, req, machine);
+  if (!simulated_why.empty() && req.draws > 0)
+    simulated = simulated_draws(cfg, req, is_platform_file(cfg.machine) ? "" : cfg.machine);
   std::shared_ptr<CallTrace> trace;
   PlatformModel pm;
   SimResult r = record_simulation(cfg, preloaded, trace, &pm);
   if (!r.ok) return r;
-  std::string why = "the run read the clock: its calls may depend on the times";
-  if (!retimed)
-    why = cfg.fidelity == Fidelity::Flow
-              ? "the flow fidelity shares links through SimGrid's solver"
-              : "links whose directions slow each other down are dated by the simulator";
-  else if (trace)
-    why = add_bands(r.report, *trace, pm, cfg, req);
-  if (!retimed && req.draws > 0) {
+  if (!simulated_why.empty() && req.draws > 0) {
     nlohmann::json b = band_header(cfg, req, pm.machine, "simulated");
-    b["why_simulated"] = why;
+    b["why_simulated"] = simulated_why;
     write_bands(r.report, simulated, std::move(b));
   }
-  if (!why.empty()) {
-    if (req.draws > 0 && retimed)
-      r.report["bands"] = {{"method", "unavailable"}, {"why", why}, {"draws", req.draws}};
-    if (req.sensitivity) r.report["sensitivity"] = {{"method", "unavailable"}, {"why", why}};
-  }
+  if (!simulated_why.empty())
+    mark_unavailable(r.report, req, simulated_why);
+  else if (!trace)
+    mark_unavailable(r.report, req, "the run read the clock: its calls may depend on the times");
+  else
+    add_bands(r.report, *trace, pm, cfg, req);
   return r;
 }
 

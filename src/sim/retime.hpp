@@ -48,7 +48,9 @@ struct RetimedRun {
   std::vector<double> phase_max_s;      // the critical node's total, per phase
 };
 
-// Whether retime() reproduces the simulator on this machine ("" if so, else why not).
+// Whether retime() reproduces the simulator on this machine ("" if so, else why not); the first
+// form from what a configuration says before it runs.
+std::string retimable(Fidelity fidelity, const NetworkParams& net);
 std::string retimable(const RetimeMachine& m);
 
 // The run `trace` under `draw` (ModelDraw{} is the nominal machine).
