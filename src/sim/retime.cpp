@@ -278,7 +278,7 @@ bool Retimer::receive(int r, Rank& k, const Call& c) {
   int got = -1;
   double wake = kUnknown, best = kUnknown;
   std::size_t recorded = box.size(); // the recorded sender's oldest, if pending
-  seen_.assign(ranks_.size(), 0);
+  seen_.resize(ranks_.size(), 0);    // all 0 between calls: only the sources met are reset below
   for (std::size_t i = 0; i < box.size(); ++i) {
     const Msg* m = box[i];
     if (m->tag != c.tag || seen_[std::size_t(m->src)]) continue;
@@ -292,6 +292,8 @@ bool Retimer::receive(int r, Rank& k, const Call& c) {
     }
     wake = std::min(wake, m->arrival);
   }
+  for (const Msg* m : box)
+    seen_[std::size_t(m->src)] = 0;
   // Under a draw, a receive from any source may find another sender's message first; the calls
   // after it could then differ from the recorded ones, so the retimer keeps the recorded sender
   // and counts the receive as reordered (the report says how many draws had one).
