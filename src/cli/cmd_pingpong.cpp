@@ -16,7 +16,7 @@ static int cmd_pingpong(std::vector<std::string> args) {
   CLI::App app{"Ping-pong benchmark: virtual one-way time per message size and distance",
                "zcube pingpong"};
   SimFlags sf;
-  sf.nodes = 2;
+  sf.defaults["nodes"] = "2";
   sf.add_to(app);
   int from = 0;
   std::string to;
@@ -27,7 +27,6 @@ static int cmd_pingpong(std::vector<std::string> args) {
       ->capture_default_str();
   app.add_option("--report", report, "write the report JSON");
   if (int rc = parse(app, args); rc >= 0) return rc;
-  sf.machine = data_file(sf.machine);
   check_output_path(report, "--report");
   SimConfig cfg;
   sf.apply(cfg);

@@ -16,28 +16,23 @@ namespace zc::cli {
 namespace {
 
 // The machine with the what-ifs in force, written as the figures SimGrid reads.
-MachineSpec edited(MachineSpec spec, const Overrides& o, const std::string& command) {
-  if (o.latency_s) spec.net.startup_short_s = spec.net.startup_long_s = *o.latency_s;
-  const double one_way_per_byte = spec.net.per_byte_s;
-  if (o.bandwidth_Bps) spec.net.per_byte_s = 1.0 / *o.bandwidth_Bps;
-  // The two-way total keeps its ratio to the channel rate, as the --bandwidth flag scales it on a
-  // run (sim/platform_load.cpp, apply_overrides): the Volvox keeps its duplex links.
-  if (spec.net.both_ways_Bps > 0 && spec.net.per_byte_s != one_way_per_byte)
-    spec.net.both_ways_Bps *= one_way_per_byte / spec.net.per_byte_s;
-  if (o.per_hop_s) spec.net.per_hop_s = *o.per_hop_s;
-  if (o.host_latency_s) spec.net.host_startup_s = *o.host_latency_s;
-  if (o.host_bandwidth_Bps) spec.net.host_per_byte_s = 1.0 / *o.host_bandwidth_Bps;
-  if (o.memory_bytes) spec.memory_bytes = *o.memory_bytes;
+MachineSpec edited(MachineSpec spec, const WhatIfs& w, const std::string& command) {
+  WhatIfs on_figures = w;
+  on_figures.reset("cpu-scale"); // written as the host speed (PlatformEdits)
+  MachineFigures f = machine_figures(spec, 1);
+  apply_what_ifs(on_figures, f);
+  spec.net = f.net;
+  spec.memory_bytes = f.memory_bytes.front();
   const double lowest = spec.net.per_hop_s + kSmpiEnvelopeBytes * spec.net.per_byte_s;
   const double startup = std::min(spec.net.startup_short_s, spec.net.startup_long_s);
   if (startup < lowest) {
     // Name the flag that moved the figure past the other: the start-up given, else the channel's.
     const std::string need = format_double(lowest * 1e6) + " us";
-    if (o.latency_s)
+    if (w.get("latency"))
       throw UsageError("--latency must be at least the per-hop cost plus 16 bytes at the channel "
                        "rate (" +
                        need + "): SMPI's receive overhead would be < 0");
-    throw UsageError(std::string(o.bandwidth_Bps ? "--bandwidth" : "--per-hop") +
+    throw UsageError(std::string(w.get("bandwidth") ? "--bandwidth" : "--per-hop") +
                      ": the per-hop cost plus 16 bytes at the channel rate (" + need +
                      ") exceed the start-up (" + format_double(startup * 1e6) +
                      " us), so SMPI's receive overhead would be < 0; give a --latency of at "
@@ -61,17 +56,11 @@ static int cmd_platform(std::vector<std::string> args) {
       ->type_name("INT")
       ->capture_default_str();
   app.add_option("--topology", flags["topology"], "cube or ring")->capture_default_str();
-  const std::pair<const char*, const char*> whatifs[] = {
-      {"latency", "message start-up, both protocols (e.g. 275us)"},
-      {"bandwidth", "channel bandwidth (e.g. 2.8MBps)"},
-      {"per-hop", "per-hop cost: the channel latency (e.g. 10us)"},
-      {"host-latency", "host (srm) link start-up: host-up and host-down latency (e.g. 1ms)"},
-      {"host-bandwidth", "host (srm) link bandwidth: host-up and host-down (e.g. 1MBps)"},
-      {"cpu-scale", "multiply every CPU cost: the host speed becomes clock / k"},
-      {"memory", "node memory (e.g. 16MiB)"}};
+  // Every what-if but --cost-scale (a run's units, not a machine's figure), from the flag table.
   std::map<std::string, std::string> given;
-  for (const auto& [k, help] : whatifs)
-    app.add_option("--" + std::string(k), given[k], help);
+  add_run_flag_options(app, given, [](const RunFlag& f) {
+    return f.group == RunFlag::Group::WhatIf && f.name != "cost-scale";
+  });
   app.add_option("-o,--output", out, "write to this file instead of standard output");
   app.footer(whatif_help());
   if (int rc = parse(app, args); rc >= 0) return rc;
@@ -88,9 +77,9 @@ static int cmd_platform(std::vector<std::string> args) {
   if (c.machine.ends_with(".xml"))
     throw UsageError("--machine: expected ipsc2, ipsc860 or volvox (a built-in model)");
   PlatformEdits pe;
-  pe.cpu_scale = c.overrides.cpu_scale.value_or(1.0);
+  pe.cpu_scale = c.what_ifs.cpu_scale();
   const std::string xml =
-      platform_xml(edited(machine_spec(c.machine), c.overrides, command), c.nodes, c.topology, pe);
+      platform_xml(edited(machine_spec(c.machine), c.what_ifs, command), c.nodes, c.topology, pe);
   if (out.empty()) {
     std::cout << xml;
     return 0;

@@ -118,32 +118,17 @@ static int cmd_run(std::vector<std::string> args) {
   CLI::App app{"Simulate a parallel z-buffer algorithm on a 1990s machine model", "zcube run"};
   SimFlags sf;
   sf.add_to(app);
-  std::string algorithm = "sequential", scene = default_scene_path(), size, image, depth, report;
-  int frames = 1;
-  app.add_option("--algorithm", algorithm, "algorithm name (zcube run --list)")
-      ->capture_default_str();
-  app.add_option("--scene", scene, "scene file")->capture_default_str();
-  app.add_option("--size", size, "image size WxH");
-  app.add_option("--frames", frames, "pictures of the camera path")->capture_default_str();
+  // The rest of the run's description (algorithm, scene, size, frames, the algorithms' options),
+  // from the one flag table (run/run_flags.hpp).
+  std::map<std::string, std::string> more;
+  add_run_flag_options(app, more, [](const RunFlag& f) {
+    return f.group == RunFlag::Group::Option || f.name == "algorithm" || f.name == "scene" ||
+           f.name == "size" || f.name == "frames";
+  });
+  std::string image, depth, report;
   app.add_option("--image", image, "write the (last) picture as PNG");
   app.add_option("--depth", depth, "write its depth as EXR");
   app.add_option("--report", report, "write the report JSON");
-  // The algorithms' own options, from their declarations (algorithm.hpp: OptionSpec).
-  const auto specs = run_option_specs();
-  std::vector<std::string> option_values(specs.size());
-  for (std::size_t i = 0; i < specs.size(); ++i) {
-    const auto& [s, algos] = specs[i];
-    std::string values; // the values the flag takes, which the help text may only describe
-    if (s.kind == OptionSpec::Kind::Choice)
-      for (const auto& c : s.choices)
-        values += (values.empty() ? " (" : "|") + c;
-    else if (s.kind == OptionSpec::Kind::Integer)
-      values = " (" + std::to_string(s.min) + ".." + std::to_string(s.max);
-    if (!values.empty()) values += ")";
-    app.add_option("--" + s.name, option_values[i],
-                   algos + ": " + s.help + values +
-                       (s.default_value.empty() ? "" : " [" + s.default_value + "]"));
-  }
   std::string backend = "sim";
   app.add_option("--backend", backend,
                  "sim (SimGrid, virtual time) or mpi (real processes under mpirun, measured time)")
@@ -168,8 +153,6 @@ static int cmd_run(std::vector<std::string> args) {
   bool list = false;
   app.add_flag("--list", list, "list the algorithms and exit");
   if (int rc = parse(app, args); rc >= 0) return rc;
-  scene = data_file(scene);
-  sf.machine = data_file(sf.machine);
   if (list) {
     for (const auto& a : algorithms())
       std::cout << a.name << "  " << a.summary << "\n";
@@ -189,12 +172,8 @@ static int cmd_run(std::vector<std::string> args) {
   check_image_path(image, "--image");
   check_image_path(depth, "--depth");
   auto flags = sf.flags();
-  flags["algorithm"] = algorithm;
-  flags["frames"] = std::to_string(frames);
-  if (!size.empty()) flags["size"] = size;
-  for (std::size_t i = 0; i < specs.size(); ++i)
-    if (!option_values[i].empty()) flags[specs[i].first.name] = option_values[i];
-  SimConfig cfg = config_from_flags(flags, scene);
+  flags.merge(given_flags(more));
+  SimConfig cfg = config_from_flags(flags, default_scene_path());
   if ((!image.empty() || !depth.empty()) && !find_algorithm(cfg.algorithm).draws_picture)
     throw UsageError(std::string(image.empty() ? "--depth" : "--image") + ": " + cfg.algorithm +
                      " draws no picture");

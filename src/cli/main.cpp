@@ -14,6 +14,7 @@
 #include <simgrid/version.h>
 
 #include "cli/command.hpp"
+#include "run/run_flags.hpp"
 #include "util/error.hpp"
 #include "util/error_text.hpp"
 
@@ -25,8 +26,8 @@ std::map<std::string, CommandInfo>& registry() {
 } // namespace zc::cli
 
 static void usage(std::ostream& os) {
-  os << "usage: zcube <command> [options]   (zcube <command> --help for its "
-        "options; zcube --version)\n\ncommands:\n";
+  os << "usage: zcube <command> [options]   (zcube help <command> or zcube <command> --help "
+        "for its options; zcube help flags for the run flags; zcube --version)\n\ncommands:\n";
   for (const auto& [name, info] : zc::cli::registry())
     os << "  " << name << std::string(name.size() < 12 ? 12 - name.size() : 1, ' ') << info.summary
        << "\n";
@@ -79,17 +80,25 @@ static int run_command(int argc, char** argv) {
               << ")\n";
     return 0;
   }
-  if (cmd == "--help" || cmd == "-h" || cmd == "help") {
+  if ((cmd == "--help" || cmd == "-h" || cmd == "help") && argc < 3) {
     usage(std::cout);
     return 0;
   }
+  if (cmd == "help" && std::string(argv[2]) == "flags") { // the docs' table of run flags
+    std::cout << zc::run_flags_markdown();
+    return 0;
+  }
   auto& reg = zc::cli::registry();
-  auto it = reg.find(cmd);
+  // zcube help run: run's own --help.
+  const bool help = cmd == "help";
+  auto it = reg.find(help ? argv[2] : cmd);
   if (it == reg.end()) {
-    std::cerr << "zcube: error: unknown command '" << cmd << "' (zcube --help lists them)\n";
+    std::cerr << "zcube: error: unknown command '" << (help ? argv[2] : cmd)
+              << "' (zcube --help lists them; zcube help flags, the run flags)\n";
     return 2;
   }
   std::vector<std::string> args(argv + 2, argv + argc);
+  if (help) args = {"--help"};
   try {
     return it->second.run(args);
   } catch (const zc::InputError& e) {

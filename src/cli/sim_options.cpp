@@ -8,6 +8,7 @@
 
 #include <simgrid/s4u/Engine.hpp>
 
+#include "cli/paths.hpp"
 #include "machine/platform_xml.hpp"
 #include "repro/simulate.hpp"
 #include "run/run_flags.hpp"
@@ -16,27 +17,29 @@
 
 namespace zc::cli {
 
+void add_run_flag_options(CLI::App& app, std::map<std::string, std::string>& values,
+                          const std::function<bool(const RunFlag&)>& want, bool lists) {
+  for (const auto& f : run_flags()) {
+    if (!want(f)) continue;
+    std::string help = lists ? "comma-separated values of zcube run --" + f.name + ": " : "";
+    help += f.help;
+    if (!f.default_text.empty()) help += " [" + f.default_text + "]";
+    app.add_option("--" + f.name, values[f.name], help)->type_name(f.value_form);
+  }
+}
+
+std::map<std::string, std::string> given_flags(const std::map<std::string, std::string>& values) {
+  std::map<std::string, std::string> m;
+  for (const auto& [k, v] : values)
+    if (!v.empty()) m[k] = k == "machine" || k == "scene" ? data_file(v) : v;
+  return m;
+}
+
 void SimFlags::add_to(CLI::App& app) {
-  app.add_option("--machine", machine, "ipsc2, ipsc860, volvox, or a platform .xml")
-      ->capture_default_str();
-  nodes_option =
-      app.add_option("--nodes", nodes,
-                     "simulated nodes (a power of two on a cube; a platform .xml states its own)")
-          ->capture_default_str();
-  topology_option =
-      app.add_option("--topology", topology, "cube or ring (a platform .xml states its own)")
-          ->capture_default_str();
-  app.add_option("--fidelity", fidelity, "analytic, flow or circuit")->capture_default_str();
-  app.add_option("--latency", latency, "what-if: message start-up (e.g. 275us)");
-  app.add_option("--bandwidth", bandwidth, "what-if: channel bandwidth (e.g. 2.8MBps)");
-  app.add_option("--per-hop", per_hop, "what-if: per-hop cost (e.g. 10us)");
-  app.add_option("--host-latency", host_latency,
-                 "what-if: host (srm) link start-up to node 0 (e.g. 1ms)");
-  app.add_option("--host-bandwidth", host_bandwidth,
-                 "what-if: host (srm) link bandwidth (e.g. 1MBps)");
-  app.add_option("--cpu-scale", cpu_scale, "what-if: multiply every CPU cost (0.25 = 4x faster)");
-  app.add_option("--memory", memory, "what-if: node memory (e.g. 16MiB)");
-  app.add_option("--cost-scale", cost_scale, "multiply every cost, CPU and network");
+  add_run_flag_options(app, values, [](const RunFlag& f) {
+    return f.group == RunFlag::Group::WhatIf || f.name == "machine" || f.name == "nodes" ||
+           f.name == "topology" || f.name == "fidelity";
+  });
   app.add_option("--cfg", cfg,
                  "a SimGrid setting name:value, passed to SimGrid after zcube's own (e.g. "
                  "network/model:LV08 with --fidelity flow; --help-cfg lists them); repeatable");
@@ -51,13 +54,13 @@ void SimFlags::add_to(CLI::App& app) {
 std::string whatif_help() {
   std::ostringstream s;
   s << std::setprecision(4)
-    << "What-if units (SimGrid's; `zcube units` lists them all), required on every flag:\n"
-       "  times  s ms us ns (also m h d w)    --latency, --per-hop, --host-latency: 0 .. 1 h\n"
-       "  rates  Bps kBps MBps GBps KiBps MiBps bps kbps Mbps    --bandwidth, --host-bandwidth: "
-       ">= 1 Bps\n"
-       "  sizes  B kB MB KiB MiB GiB    --memory: > 0\n"
-       "  --cpu-scale 1e-3 .. 1e3, --cost-scale 1e-6 .. 1e6 (plain numbers)\n"
-       "Each machine's own figures (docs/machines.md has their sources):\n"
+    << "What-ifs: an absolute figure with its unit (SimGrid's; `zcube units` lists them), or xK, "
+       "K times the machine's own figure (--latency x0.1: each message protocol's start-up a "
+       "tenth):\n";
+  for (const auto& w : what_if_specs())
+    s << "  --" << std::left << std::setw(15) << w.flag << std::setw(16) << w.example << w.bounds
+      << "\n";
+  s << "Each machine's own figures (docs/machines.md has their sources):\n"
        "  machine   start-up short/long  bandwidth  per hop  host link        memory  clock    "
        "switching\n";
   for (const auto& name : machine_names()) {
@@ -126,7 +129,8 @@ std::vector<std::string> simgrid_args_of(const std::vector<std::string>& cfg,
 }
 
 std::vector<std::string> SimFlags::simgrid_args() const {
-  return simgrid_args_of(cfg, log, fidelity);
+  const auto f = values.find("fidelity");
+  return simgrid_args_of(cfg, log, f == values.end() || f->second.empty() ? "circuit" : f->second);
 }
 
 void BatchSimGridFlags::add_to(CLI::App& app) {
@@ -152,21 +156,11 @@ void BatchSimGridFlags::apply() const {
 }
 
 std::map<std::string, std::string> SimFlags::flags() const {
-  std::map<std::string, std::string> m = {{"machine", machine}, {"fidelity", fidelity}};
-  // A platform .xml states its own node count unless --nodes is given, and its own topology.
-  const bool xml = machine.ends_with(".xml");
-  if (!xml || (nodes_option && nodes_option->count() > 0)) m["nodes"] = std::to_string(nodes);
-  if (!xml || (topology_option && topology_option->count() > 0)) m["topology"] = topology;
-  const std::pair<const char*, const std::string*> text[] = {{"latency", &latency},
-                                                             {"bandwidth", &bandwidth},
-                                                             {"per-hop", &per_hop},
-                                                             {"host-latency", &host_latency},
-                                                             {"host-bandwidth", &host_bandwidth},
-                                                             {"cpu-scale", &cpu_scale},
-                                                             {"memory", &memory},
-                                                             {"cost-scale", &cost_scale}};
-  for (const auto& [k, v] : text)
-    if (!v->empty()) m[k] = *v;
+  auto m = given_flags(values);
+  // A platform .xml states its own node count and topology: a command's default does not apply.
+  const bool xml = m.count("machine") && m.at("machine").ends_with(".xml");
+  for (const auto& [k, v] : defaults)
+    if (!xml) m.emplace(k, v);
   return m;
 }
 
@@ -176,28 +170,16 @@ void SimFlags::apply(SimConfig& cfg) const {
   cfg.nodes = c.nodes;
   cfg.topology = c.topology;
   cfg.fidelity = c.fidelity;
-  cfg.overrides = c.overrides;
+  cfg.what_ifs = c.what_ifs;
   cfg.simgrid_args = simgrid_args();
   check_simgrid_args(cfg.simgrid_args);
 }
 
 std::string describe_overrides(const SimConfig& c) {
-  const Overrides& o = c.overrides;
   std::ostringstream s;
-  s << std::setprecision(6);
-  if (o.latency_s) s << "what-if: --latency " << *o.latency_s * 1e6 << " us (message start-up)\n";
-  if (o.bandwidth_Bps)
-    s << "what-if: --bandwidth " << *o.bandwidth_Bps / 1e6 << " MB/s (channel bandwidth)\n";
-  if (o.per_hop_s) s << "what-if: --per-hop " << *o.per_hop_s * 1e6 << " us\n";
-  if (o.host_latency_s)
-    s << "what-if: --host-latency " << *o.host_latency_s * 1e6 << " us (host link start-up)\n";
-  if (o.host_bandwidth_Bps)
-    s << "what-if: --host-bandwidth " << *o.host_bandwidth_Bps / 1e6
-      << " MB/s (host link bandwidth)\n";
-  if (o.cpu_scale) s << "what-if: --cpu-scale " << *o.cpu_scale << " (every CPU cost)\n";
-  if (o.memory_bytes)
-    s << "what-if: --memory " << *o.memory_bytes / 1048576 << " MiB (node memory)\n";
-  if (o.cost_scale) s << "what-if: --cost-scale " << *o.cost_scale << " (every cost)\n";
+  for (const auto& [spec, v] : c.what_ifs.in_order())
+    s << "what-if: --" << spec->flag << " " << what_if_text(*spec, v) << " (" << spec->meaning
+      << ")\n";
   for (const auto& a : c.simgrid_args)
     s << "SimGrid: " << a << "\n";
   return s.str();

@@ -1,31 +1,40 @@
 #pragma once
 // Flags shared by every command that simulates: machine, nodes, topology, fidelity and the what-if
 // overrides (SimGrid-style units: 275us, 2.8MBps, 16MiB).
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
+#include "run/run_flags.hpp"
 #include "sim/simulation.hpp"
 
 namespace zc::cli {
 
+// Adds --<name> for every flag of the run flag table (run/run_flags.hpp) that `want` takes, its
+// text going to values[name] (empty: not given). `lists`: each takes comma-separated values (zcube
+// sweep). The help shows the table's value form, default and meaning.
+void add_run_flag_options(CLI::App& app, std::map<std::string, std::string>& values,
+                          const std::function<bool(const RunFlag&)>& want, bool lists = false);
+
+// The flags given (non-empty values), machine and scene found among the bundled data when they
+// are not files from the working directory (cli/paths.hpp).
+std::map<std::string, std::string> given_flags(const std::map<std::string, std::string>& values);
+
 struct SimFlags {
-  std::string machine = "ipsc2", topology = "cube", fidelity = "circuit";
-  int nodes = 1;
-  std::string latency, bandwidth, per_hop, host_latency, host_bandwidth, cpu_scale, memory,
-      cost_scale;
-  std::vector<std::string> cfg, log;   // passed to SimGrid as --cfg=... and --log=...
-  CLI::Option* nodes_option = nullptr; // a platform .xml gives the node count unless --nodes does
-  CLI::Option* topology_option = nullptr; // and its topology (--topology with it is refused)
+  std::map<std::string, std::string> values;   // machine, nodes, topology, fidelity, what-ifs
+  std::map<std::string, std::string> defaults; // a command's own defaults (pingpong: nodes 2)
+  std::vector<std::string> cfg, log;           // passed to SimGrid as --cfg=... and --log=...
 
   void add_to(CLI::App& app);
-  // The given flags as text (sim/run_flags.hpp), for config_from_flags.
+  // The given flags as text (run/run_flags.hpp), with the command's defaults, for
+  // config_from_flags.
   std::map<std::string, std::string> flags() const;
   // --cfg name:value and --log settings as SimGrid arguments (UsageError on a malformed one).
   std::vector<std::string> simgrid_args() const;
-  // Fills cfg's machine, nodes, topology, fidelity and overrides (UsageError on bad values).
+  // Fills cfg's machine, nodes, topology, fidelity and what-ifs (UsageError on bad values).
   void apply(SimConfig& cfg) const;
 };
 

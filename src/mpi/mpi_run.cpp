@@ -25,6 +25,16 @@ namespace {
 }
 
 // Page faults this process took so far (getrusage: minor faults, a page mapped at first touch).
+// A node's memory under --memory (0: no limit): the value, or the machine's own times a factor.
+double node_memory_what_if(const SimConfig& cfg) {
+  const auto m = cfg.what_ifs.get("memory");
+  if (!m) return 0.0;
+  if (!m->relative) return m->value;
+  MachineFigures f = machine_figures(machine_spec(cfg.machine), 1);
+  apply_what_ifs(cfg.what_ifs, f);
+  return f.memory_bytes.front();
+}
+
 long minor_faults() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
@@ -119,7 +129,7 @@ SimResult run_mpi(const SimConfig& cfg) {
   std::vector<FrameImage> images;
   MpiComm::clock_name(); // a bad ZCUBE_MPI_CLOCK is a usage error before anything runs
   MpiComm comm(MPI_COMM_WORLD, P, cfg.topology, stats);
-  MpiContext ctx(comm, stats, scene, options, cfg.overrides.memory_bytes.value_or(0.0), images);
+  MpiContext ctx(comm, stats, scene, options, node_memory_what_if(cfg), images);
   MPI_Barrier(MPI_COMM_WORLD);
   comm.reset_clock();
   const long faults0 = minor_faults();

@@ -186,7 +186,7 @@ PaperPlan claims_plan(const ReproduceOptions& o) {
        {"node-initiated", "host-broadcast", "object-forwarding", "host-initiated"}) {
     SimConfig c =
         repro_config("ipsc2", 32, m, o.root + "/scenes/blazek/thesis_spheres_64.json", 512);
-    c.overrides.memory_bytes = 16.0 * 1048576; // ch. IV: "up to sixteen megabytes"
+    c.what_ifs.set("memory", {16.0 * 1048576}); // ch. IV: "up to sixteen megabytes"
     if (std::string(m) == "host-initiated") c.options.values["packet"] = "100";
     p.points.push_back({std::string("blazek/") + m, c});
   }

@@ -85,8 +85,10 @@ std::map<std::string, nlohmann::json> run_regress(const std::vector<RegressRun>&
   std::vector<SweepPoint> points;
   for (const auto& run : runs) {
     auto flags = run.flags;
-    for (const auto& [k, v] : set)
-      flags[k] = v;
+    for (const auto& [k, v] : set) // a factor (x2) scales the run's own value of a what-if
+      flags[k] = find_what_if(k) && flags.count(k)
+                     ? compose_what_if_text(*find_what_if(k), flags[k], v)
+                     : v;
     if (flags.count("scene") && !std::filesystem::path(flags["scene"]).is_absolute())
       flags["scene"] = root + "/" + flags["scene"];
     points.push_back(make_point(std::move(flags), root + "/scenes/teapot.json"));

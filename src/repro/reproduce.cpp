@@ -102,18 +102,8 @@ std::string config_key(const SimConfig& c) {
   j["machine"] = c.machine;
   j["fidelity"] = fidelity_name(c.fidelity);
   j["simgrid"] = c.simgrid_args;
-  const Overrides& v = c.overrides;
-  const std::pair<const char*, const std::optional<double>*> over[] = {
-      {"latency_s", &v.latency_s},
-      {"bandwidth_Bps", &v.bandwidth_Bps},
-      {"per_hop_s", &v.per_hop_s},
-      {"host_latency_s", &v.host_latency_s},
-      {"host_bandwidth_Bps", &v.host_bandwidth_Bps},
-      {"cpu_scale", &v.cpu_scale},
-      {"memory_bytes", &v.memory_bytes},
-      {"cost_scale", &v.cost_scale}};
-  for (const auto& [k, x] : over)
-    if (*x) j[k] = **x;
+  for (const auto& [key, value] : what_if_columns(c.what_ifs))
+    j[key] = value;
   return j.dump();
 }
 

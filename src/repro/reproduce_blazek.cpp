@@ -178,7 +178,7 @@ PaperPlan blazek_plan(const ReproduceOptions& o) {
     for (const auto& m : kMethods)
       for (int n : kBlazekNodes) {
         SimConfig c = repro_config("ipsc2", n, m.name, path, 512);
-        c.overrides.memory_bytes = 16.0 * 1048576;
+        c.what_ifs.set("memory", {16.0 * 1048576});
         if (!m.option_key.empty()) c.options.values[m.option_key] = m.option_value;
         p.points.push_back({key(m.name, s, n), c});
       }

@@ -301,7 +301,7 @@ PaperPlan compositing_plan(const ReproduceOptions& o) {
     SimConfig c = repro_config(pt.machine, pt.nodes, "compositing-study",
                                o.root + "/scenes/kurc/" + pt.scene + ".json", pt.size);
     c.topology = pt.topology;
-    c.overrides.memory_bytes = 1024.0 * 1048576;
+    c.what_ifs.set("memory", {1024.0 * 1048576});
     c.compare_with_sequential = false;
     p.points.push_back({pt.key(), c});
   }

@@ -116,7 +116,7 @@ PaperPlan fidelity_plan(const ReproduceOptions& o) {
       SimConfig c = repro_config(r.machine, r.nodes, r.algorithm, o.root + "/" + r.scene, r.size);
       c.topology = parse_topology(r.topology);
       c.fidelity = parse_fidelity(f);
-      if (r.memory_mib > 0) c.overrides.memory_bytes = r.memory_mib * 1048576;
+      if (r.memory_mib > 0) c.what_ifs.set("memory", {r.memory_mib * 1048576});
       if (!r.option_key.empty()) c.options.values[r.option_key] = r.option_value;
       p.points.push_back({key(r, f), c});
     }

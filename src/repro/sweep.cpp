@@ -25,7 +25,8 @@ std::vector<std::string> split_list(const std::string& text, const std::string& 
   return v;
 }
 
-std::vector<SweepPoint> expand_sweep(const std::vector<SweepAxis>& axes, const std::string& scene) {
+std::vector<SweepPoint> expand_sweep(const std::vector<SweepAxis>& axes, const std::string& scene,
+                                     const Locate& locate) {
   std::vector<SweepPoint> pts(1);
   for (const auto& ax : axes) {
     std::vector<SweepPoint> next;
@@ -38,15 +39,21 @@ std::vector<SweepPoint> expand_sweep(const std::vector<SweepAxis>& axes, const s
     pts = std::move(next);
   }
   for (auto& p : pts)
-    p = make_point(std::move(p.values), scene);
+    p = make_point(std::move(p.values), scene, locate);
   return pts;
 }
 
-SweepPoint make_point(std::map<std::string, std::string> values, const std::string& scene) {
+SweepPoint make_point(std::map<std::string, std::string> values, const std::string& scene,
+                      const Locate& locate) {
   SweepPoint p;
   p.values = std::move(values);
+  auto flags = p.values; // the files found where they are; the row keeps the text given
+  if (locate)
+    for (const char* f : {"scene", "machine"})
+      if (flags.count(f) && !flags[f].empty()) flags[f] = locate(flags[f]);
+  std::erase_if(flags, [](const auto& kv) { return kv.second.empty(); }); // "": not given
   try {
-    p.config = config_from_flags(p.values, scene);
+    p.config = config_from_flags(flags, locate ? locate(scene) : scene);
   } catch (const std::exception& ex) {
     p.error = ex.what();
   }
@@ -64,8 +71,41 @@ std::vector<nlohmann::json> run_points(const std::vector<SweepPoint>& points,
   std::size_t k = 0;
   for (const auto& p : points)
     reports.push_back(p.config ? ran[k++]
-                               : nlohmann::json{{"status", "error"}, {"error", p.error}});
+                               : nlohmann::json{{"status", "invalid"}, {"error", p.error}});
   return reports;
+}
+
+namespace {
+
+// An integer-valued flag's text as a number ("16" -> 16), else the text.
+nlohmann::json typed(const std::string& text) {
+  std::size_t used = 0;
+  try {
+    const long long v = std::stoll(text, &used);
+    if (used == text.size() && !text.empty() && text.find_first_of("+ ") == std::string::npos)
+      return v;
+  } catch (const std::exception&) {
+  }
+  return text;
+}
+
+} // namespace
+
+void add_axis_columns(nlohmann::json& row, const std::string& flag, const std::string& text) {
+  const WhatIfSpec* w = find_what_if(flag);
+  if (!w) {
+    row[flag] = typed(text);
+    return;
+  }
+  row[flag] = text; // as given; its numeric twins beside it (SI units, or the factor)
+  std::optional<WhatIfValue> v;
+  try {
+    if (!text.empty()) v = parse_what_if(*w, text);
+  } catch (const std::exception&) { // the point is invalid and says why
+  }
+  row[w->key] = v && !v->relative ? nlohmann::json(v->value) : nlohmann::json(nullptr);
+  if (w->quantity != WhatIfSpec::Quantity::Factor)
+    row[w->factor_key()] = v && v->relative ? nlohmann::json(v->value) : nlohmann::json(nullptr);
 }
 
 nlohmann::json sweep_rows(const std::vector<SweepAxis>& axes, const std::vector<SweepPoint>& pts,
@@ -82,7 +122,7 @@ nlohmann::json sweep_rows(const std::vector<SweepAxis>& axes, const std::vector<
     nlohmann::json row = nlohmann::json::object();
     row["index"] = i;
     for (const auto& ax : axes)
-      row[ax.flag] = pts[i].values.at(ax.flag);
+      add_axis_columns(row, ax.flag, pts[i].values.at(ax.flag));
     const std::string status = r.value("status", "error");
     row["status"] = status;
     row["error"] = r.value("error", "");
@@ -186,7 +226,7 @@ bool is_baseline(const SweepPoint& p) {
 }
 
 void add_baselines(const std::vector<SweepAxis>& axes, std::vector<SweepPoint>& points,
-                   const std::string& scene) {
+                   const std::string& scene, const Locate& locate) {
   std::vector<std::map<std::string, std::string>> have, want;
   for (const auto& p : points) {
     auto& list = is_baseline(p) ? have : want;
@@ -203,7 +243,7 @@ void add_baselines(const std::vector<SweepAxis>& axes, std::vector<SweepPoint>& 
     // on the file's P nodes they take their one-node time. node-initiated would use all P.
     const bool file = on_platform_file(k);
     if (!file) flags["nodes"] = "1";
-    SweepPoint p = make_point(flags, scene);
+    SweepPoint p = make_point(flags, scene, locate);
     if (file && !renders_on_node0_alone(ref)) {
       p.config.reset();
       // Appended piecewise: GCC 12 at -O3 reports a false -Wrestrict on the chained operator+.
@@ -266,8 +306,13 @@ void write_sweep(const std::vector<SweepAxis>& axes, const nlohmann::json& rows,
       t.header.push_back(k);
   // nlohmann::json objects sort their keys; put index and the axes first, as given.
   std::vector<std::string> order = {"index"};
-  for (const auto& ax : axes)
+  for (const auto& ax : axes) {
     order.push_back(ax.flag);
+    if (const WhatIfSpec* w = find_what_if(ax.flag)) {
+      order.push_back(w->key);
+      if (w->quantity != WhatIfSpec::Quantity::Factor) order.push_back(w->factor_key());
+    }
+  }
   for (const char* k :
        {"status", "virtual_s", "timed_s", "speedup", "efficiency", "wall_s", "messages", "bytes",
         "concurrent_volume_bytes", "load_imbalance", "identical", "image_sha256"})

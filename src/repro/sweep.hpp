@@ -23,6 +23,10 @@ struct SweepAxis {
 // Splits "1,2,4" (empty items are an error naming the flag).
 std::vector<std::string> split_list(const std::string& text, const std::string& flag);
 
+// Where a --scene or --machine value is found (cli/paths.hpp: the bundled scenes and platforms
+// when the value is not a file from the working directory); empty: as given.
+using Locate = std::function<std::string(const std::string&)>;
+
 struct SweepPoint {
   std::map<std::string, std::string> values; // flag -> value, for every axis
   std::optional<SimConfig> config;           // empty when the flags are invalid
@@ -30,10 +34,12 @@ struct SweepPoint {
 };
 
 // The point the flags describe: its configuration, or the reason it has none.
-SweepPoint make_point(std::map<std::string, std::string> values, const std::string& scene);
+SweepPoint make_point(std::map<std::string, std::string> values, const std::string& scene,
+                      const Locate& locate = {});
 
 // Every combination, the first axis varying slowest. `scene` is the default scene path.
-std::vector<SweepPoint> expand_sweep(const std::vector<SweepAxis>& axes, const std::string& scene);
+std::vector<SweepPoint> expand_sweep(const std::vector<SweepAxis>& axes, const std::string& scene,
+                                     const Locate& locate = {});
 
 // Runs the points that have a configuration through `runner` (a local or a sharded batch) and
 // returns one report per point, an invalid point's being {"status": "error", "error": reason}.
@@ -41,6 +47,11 @@ std::vector<SweepPoint> expand_sweep(const std::vector<SweepAxis>& axes, const s
 using BatchRunner = std::function<std::vector<nlohmann::json>(const std::vector<SimConfig>&)>;
 std::vector<nlohmann::json> run_points(const std::vector<SweepPoint>& points,
                                        const BatchRunner& runner);
+
+// A swept flag's columns in a row: its value (a number for integer flags such as nodes), and for a
+// what-if its numeric twins: the SI value when absolute ("latency_s"), the factor when relative
+// ("latency_factor"); the other is empty.
+void add_axis_columns(nlohmann::json& row, const std::string& flag, const std::string& text);
 
 // One row per point: the axis values, then status, error, virtual_s, timed_s (the paper's timed
 // region when the algorithm marks one, else virtual_s), wall_s, messages, bytes,
@@ -57,7 +68,7 @@ bool is_baseline(const SweepPoint& p);
 // Appends, for every combination of the non-algorithm axes and reference that has none, that
 // baseline point (zcube sweep --baseline). Its values on the algorithm option axes are "".
 void add_baselines(const std::vector<SweepAxis>& axes, std::vector<SweepPoint>& points,
-                   const std::string& scene);
+                   const std::string& scene, const Locate& locate = {});
 // Adds speedup = T(baseline) / T(point), T the timed region (timed_s), and efficiency = speedup /
 // nodes to every row (null where there is no baseline or a run failed), when any point is a
 // baseline; returns whether it did.

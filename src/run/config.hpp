@@ -1,6 +1,6 @@
 #pragma once
 // What to run, whatever the backend (SimGrid simulation or MPI processes): the machine with its
-// what-if overrides, the algorithm with its options, the scene; and what a run returns, the report
+// what-ifs, the algorithm with its options, the scene; and what a run returns, the report
 // of a report and the delivered pictures.
 #include <memory>
 #include <optional>
@@ -14,26 +14,16 @@
 #include "machine/uncertainty.hpp"
 #include "raster/framebuffer.hpp"
 #include "run/fidelity.hpp"
+#include "run/what_if.hpp"
 
 namespace zc {
-
-struct Overrides {
-  std::optional<double> latency_s;     // start-up, short and long messages
-  std::optional<double> bandwidth_Bps; // channel bandwidth (per-byte cost = 1/bandwidth)
-  std::optional<double> per_hop_s;
-  std::optional<double> host_latency_s;     // host (srm) link start-up
-  std::optional<double> host_bandwidth_Bps; // host link rate (its per-byte cost = 1/rate)
-  std::optional<double> cpu_scale;          // multiplies every CPU cost
-  std::optional<double> memory_bytes;       // node memory
-  std::optional<double> cost_scale; // multiplies every cost, CPU and network (stiffness checks)
-};
 
 struct SimConfig {
   std::string machine = "ipsc2"; // built-in name or path to a platform XML
   int nodes = 1;
   Topology topology = Topology::Cube;
   Fidelity fidelity = Fidelity::Circuit;
-  Overrides overrides;
+  WhatIfs what_ifs; // machine figures changed for this run (run/what_if.hpp)
   std::string algorithm = "sequential";
   std::shared_ptr<const Algorithm> custom; // runs instead of `algorithm` (tests, benchmarks)
   AlgorithmOptions options;

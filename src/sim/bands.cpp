@@ -69,7 +69,7 @@ RetimeMachine retime_machine(const PlatformModel& pm, const SimConfig& cfg) {
   m.cost = pm.cost;
   m.memory = pm.memory;
   m.os_resident = pm.os_resident;
-  m.precision = 1e-12 * cfg.overrides.cost_scale.value_or(1.0);
+  m.precision = 1e-12 * cfg.what_ifs.cost_scale();
   return m;
 }
 
@@ -206,8 +206,9 @@ namespace {
 std::string not_retimable(const SimConfig& cfg) {
   NetworkParams n;
   if (!is_platform_file(cfg.machine)) {
-    n = machine_spec(cfg.machine).net;
-    if (cfg.overrides.bandwidth_Bps) n.per_byte_s = 1.0 / *cfg.overrides.bandwidth_Bps;
+    MachineFigures f = machine_figures(machine_spec(cfg.machine), cfg.nodes);
+    apply_what_ifs(cfg.what_ifs, f);
+    n = f.net;
   }
   return retimable(cfg.fidelity, n);
 }

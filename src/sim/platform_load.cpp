@@ -19,10 +19,10 @@
 #include "machine/clock_limits.hpp"
 #include "machine/platform_xml.hpp"
 #include "machine/units.hpp"
+#include "run/what_if.hpp"
 #include "sim/platform_grammar.hpp"
 #include "sim/platform_probe.hpp"
 #include "sim/platform_routes.hpp"
-#include "sim/simulation.hpp"
 #include "util/error.hpp"
 #include "util/error_text.hpp"
 #include "util/input_file.hpp"
@@ -449,45 +449,15 @@ PlatformModel read_platform(const sg::Engine& e, const std::string& where) {
   return m;
 }
 
-void apply_overrides(const Overrides& o, PlatformModel& m, sg::Engine& e) {
-  auto& n = m.net;
-  const double one_way_per_byte = n.per_byte_s;
-  if (o.latency_s) n.startup_short_s = n.startup_long_s = *o.latency_s;
-  if (o.bandwidth_Bps) {
-    if (!(*o.bandwidth_Bps > 0)) throw UsageError("--bandwidth must be positive");
-    n.per_byte_s = 1.0 / *o.bandwidth_Bps;
-  }
-  if (o.per_hop_s && n.switching == Switching::StoreAndForward)
-    throw UsageError("--per-hop: " + m.machine + " is store-and-forward: each hop pays a whole " +
-                     "start-up and transfer, there is no per-hop cost to change (use --latency, " +
-                     "the start-up of each hop, or --bandwidth)");
-  if (o.per_hop_s) n.per_hop_s = *o.per_hop_s;
-  if (o.host_latency_s) n.host_startup_s = *o.host_latency_s;
-  if (o.host_bandwidth_Bps) {
-    if (!(*o.host_bandwidth_Bps > 0)) throw UsageError("--host-bandwidth must be positive");
-    n.host_per_byte_s = 1.0 / *o.host_bandwidth_Bps;
-  }
-  if (o.memory_bytes)
-    for (auto& mem : m.memory)
-      mem = *o.memory_bytes;
-  double cpu = o.cpu_scale.value_or(1.0);
-  if (o.cost_scale) {
-    const double k = *o.cost_scale;
-    cpu *= k;
-    n.startup_short_s *= k;
-    n.startup_long_s *= k;
-    n.per_byte_s *= k;
-    n.per_hop_s *= k;
-    n.host_startup_s *= k;
-    n.host_per_byte_s *= k;
-  }
-  if (cpu != 1.0)
+void apply_what_ifs(const WhatIfs& w, PlatformModel& m, sg::Engine& e) {
+  MachineFigures f{m.machine, m.net, m.memory, 1.0};
+  apply_what_ifs(w, f);
+  m.net = f.net;
+  m.memory = f.memory_bytes;
+  if (f.cpu_factor != 1.0)
     for (auto& c : m.cost)
-      c = c.scaled(cpu);
-  // A what-if channel rate keeps the two-way total's ratio to it (the T800's acknowledges scale
-  // with the link's bit rate).
-  if (n.both_ways_Bps > 0 && n.per_byte_s != one_way_per_byte)
-    n.both_ways_Bps *= one_way_per_byte / n.per_byte_s;
+      c = c.scaled(f.cpu_factor);
+  const auto& n = m.net;
   for (sg::Link* l : e.get_all_links()) {
     const std::string name = l->get_name();
     if (name == "__loopback__") continue;

@@ -14,7 +14,7 @@
 
 namespace zc {
 
-struct Overrides;
+class WhatIfs;
 
 struct PlatformModel {
   std::string machine;
@@ -52,9 +52,9 @@ std::vector<std::string> platform_file_settings(const std::string& path);
 
 PlatformModel read_platform(const simgrid::s4u::Engine& e, const std::string& label);
 
-// The what-if overrides, then the links set to what the fidelities need: bandwidth from the model,
-// zero latency (zcube charges start-up and hops itself, so SimGrid's flow sharing is not weighted
-// by route latency).
-void apply_overrides(const Overrides& o, PlatformModel& m, simgrid::s4u::Engine& e);
+// The what-ifs (run/what_if.hpp), then the links set to what the fidelities need: bandwidth from
+// the model, zero latency (zcube charges start-up and hops itself, so SimGrid's flow sharing is
+// not weighted by route latency).
+void apply_what_ifs(const WhatIfs& w, PlatformModel& m, simgrid::s4u::Engine& e);
 
 } // namespace zc

@@ -38,7 +38,7 @@ namespace {
 // What produced the report's times besides the network figures: the host link, every counted
 // operation's CPU cost on node 0 (what-ifs applied; docs/machines.md gives each one's source and
 // range), and the what-if flags in force (empty when none), so that a report speaks for itself.
-void add_cpu_and_what_ifs(nlohmann::json& j, const PlatformModel& pm, const Overrides& o) {
+void add_cpu_and_what_ifs(nlohmann::json& j, const PlatformModel& pm, const WhatIfs& o) {
   j["model"]["host_startup_s"] = pm.net.host_startup_s;
   j["model"]["host_per_byte_s"] = pm.net.host_per_byte_s;
   CostTable node0 = pm.cost.empty() ? CostTable{} : pm.cost.front();
@@ -47,14 +47,8 @@ void add_cpu_and_what_ifs(nlohmann::json& j, const PlatformModel& pm, const Over
     cpu[name.starts_with("cost_") ? name.substr(5) : name] = *v;
   j["model"]["cpu_seconds"] = cpu;
   nlohmann::json w = nlohmann::json::object();
-  if (o.latency_s) w["latency_s"] = *o.latency_s;
-  if (o.bandwidth_Bps) w["bandwidth_Bps"] = *o.bandwidth_Bps;
-  if (o.per_hop_s) w["per_hop_s"] = *o.per_hop_s;
-  if (o.host_latency_s) w["host_latency_s"] = *o.host_latency_s;
-  if (o.host_bandwidth_Bps) w["host_bandwidth_Bps"] = *o.host_bandwidth_Bps;
-  if (o.cpu_scale) w["cpu_scale"] = *o.cpu_scale;
-  if (o.memory_bytes) w["memory_bytes"] = *o.memory_bytes;
-  if (o.cost_scale) w["cost_scale"] = *o.cost_scale;
+  for (const auto& [key, value] : what_if_columns(o))
+    w[key] = value;
   j["what_if"] = w;
 }
 
@@ -126,7 +120,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
     // --cpu-scale is the host speed clock / k, as `zcube platform --cpu-scale` writes it: a file
     // written with it runs as the flag does, to the bit (costs are cycles / speed either way).
     PlatformEdits edits;
-    edits.cpu_scale = cfg.overrides.cpu_scale.value_or(1.0);
+    edits.cpu_scale = cfg.what_ifs.cpu_scale();
     builtin_xml = platform_xml(machine_spec(cfg.machine), cfg.nodes, cfg.topology, edits);
     platform_label = "zcube platform --machine " + cfg.machine + " --nodes " +
                      std::to_string(cfg.nodes) + " --topology " + topology_name(cfg.topology);
@@ -142,8 +136,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
   // (1e-12 s is, up to ~4000 s of virtual time; 1e-24 made SimGrid miss wake-ups and report a
   // deadlock) and below the shortest events. It scales with --cost-scale, so scaled runs are the
   // same computation with every number multiplied by k.
-  args.push_back("--cfg=surf/precision:" +
-                 format_double(1e-12 * cfg.overrides.cost_scale.value_or(1.0)));
+  args.push_back("--cfg=surf/precision:" + format_double(1e-12 * cfg.what_ifs.cost_scale()));
   // Under the flow fidelity every message is an actor (Delivery::post): SimGrid's guard page on
   // its stack cost an mprotect pair that split and merged the heap's mapping, a quarter of the
   // host CPU of a 128-node run and a third of a 1024-node one. Those runs go without stack guards
@@ -167,9 +160,9 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
   if (is_file && cfg.nodes != pm.nodes && cfg.nodes != 0)
     throw UsageError("--nodes " + std::to_string(cfg.nodes) + " but " + platform_label +
                      " models " + std::to_string(pm.nodes) + " nodes");
-  Overrides overrides = cfg.overrides;
-  if (!is_file) overrides.cpu_scale.reset(); // in the built-in machine's host speed already
-  apply_overrides(overrides, pm, e);
+  WhatIfs what_ifs = cfg.what_ifs;
+  if (!is_file) what_ifs.reset("cpu-scale"); // in the built-in machine's host speed already
+  apply_what_ifs(what_ifs, pm, e);
   if (cfg.draw) apply_model_draw(*cfg.draw, pm);
   if (model) *model = pm;
   const int P = pm.nodes;
@@ -239,7 +232,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
   // nanosecond, and compute phases (a CPU cycle is 25..63 ns) are rounded or vanish when added to
   // it (a 1e300 s latency left every compute phase at 0 s). Such a run has no exact times to
   // report.
-  const double clock_limit = 0x1p52 * 1e-9 * cfg.overrides.cost_scale.value_or(1.0);
+  const double clock_limit = 0x1p52 * 1e-9 * cfg.what_ifs.cost_scale();
   if (failure.empty() && !(vtime <= clock_limit))
     failure = "virtual time " + format_double(vtime) + " s is beyond " +
               format_double(clock_limit) +
@@ -274,7 +267,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
       {"node_memory_bytes", pm.memory.empty() ? 0.0 : pm.memory[0]},
       {"os_resident_bytes", pm.os_resident}};
   if (pm.net.both_ways_Bps > 0) j["model"]["both_ways_Bps"] = pm.net.both_ways_Bps;
-  add_cpu_and_what_ifs(j, pm, cfg.overrides);
+  add_cpu_and_what_ifs(j, pm, cfg.what_ifs);
 
   // What the simulation cost in events: the same in every run of this configuration, on any host.
   j["simulation_cost"] = sim_cost;

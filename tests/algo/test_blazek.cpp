@@ -17,7 +17,7 @@ nlohmann::json run_method(const std::string& algo, const std::string& scene, int
   c.width = c.height = size;
   c.options.values = std::move(opt);
   c.compare_with_sequential = compare;
-  c.overrides.memory_bytes = 64.0 * 1048576;
+  c.what_ifs.set("memory", {64.0 * 1048576});
   return run_simulation_isolated(c);
 }
 

@@ -15,7 +15,7 @@ TEST(Robustness, BlazekMergeOnRingsOfAnySize) {
       c.algorithm = algo;
       c.width = c.height = 48;
       c.compare_with_sequential = true;
-      c.overrides.memory_bytes = 64.0 * 1024 * 1024;
+      c.what_ifs.set("memory", {64.0 * 1024 * 1024});
       c.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/blazek/spheres_16.json";
       auto r = run_simulation_isolated(c);
       ASSERT_EQ(r.value("status", ""), "ok") << algo << " P=" << P << ": " << r.dump();

@@ -21,7 +21,7 @@ SimConfig four_nodes(const std::string& algorithm) {
   c.width = 24;
   c.height = 20; // not a multiple of 4: partial strips and bands
   c.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/blazek/spheres_16.json";
-  c.overrides.memory_bytes = 64.0 * 1024 * 1024;
+  c.what_ifs.set("memory", {64.0 * 1024 * 1024});
   // Every algorithm that draws a picture (not comm-check, pingpong, compositing-study).
   c.compare_with_sequential = algorithm != "comm-check" && find_algorithm(algorithm).draws_picture;
 #ifdef ZCUBE_SANITIZED
@@ -59,7 +59,7 @@ TEST(EveryAlgorithm, FailedRunsEndCleanly) {
                                      std::pair{"host-initiated", 0.53e6}}) {
     SCOPED_TRACE(name);
     SimConfig c = four_nodes(name);
-    c.overrides.memory_bytes = memory;
+    c.what_ifs.set("memory", {memory});
     const auto r = run_simulation_isolated(c);
     EXPECT_EQ(r.value("status", ""), "out_of_memory") << r.dump().substr(0, 600);
   }

@@ -33,7 +33,7 @@ nlohmann::json kurc(const std::string& scheme, const std::string& scene, int P, 
   c.scene_path = scene;
   c.width = c.height = size;
   c.compare_with_sequential = compare;
-  c.overrides.memory_bytes = 64.0 * 1048576; // the mechanics, not the 4 MB limit, are tested here
+  c.what_ifs.set("memory", {64.0 * 1048576}); // the mechanics, not the 4 MB limit, are tested here
   return run_simulation_isolated(c);
 }
 

@@ -235,8 +235,8 @@ expect compare-refuses-before-printing $([ ! -s "$tmp/out" ]; echo $?) "$(cat "$
 
 # --- an algorithm option's help names the values it takes ---------------------------------------
 "$zcube" run --help >"$tmp/help" 2>&1
-grep -q -- "--vertices .*(broadcast|request) \[broadcast\]" "$tmp/help" &&
-  grep -q -- "--packet .*(10..1000) \[100\]" "$tmp/help"
+grep -q -- "--vertices broadcast|request" "$tmp/help" && grep -q -- "\[broadcast\]" "$tmp/help" &&
+  grep -q -- "--packet 10..1000 .* \[100\]" "$tmp/help"
 expect run-help-names-option-values $? "$(grep -- '--vertices\|--packet' "$tmp/help")"
 
 # --- a what-if that would change nothing is refused: no per-hop cost on store-and-forward links ---
@@ -265,8 +265,8 @@ usage_error regress-host-latency "5parsecs" "$zcube" regress --runs "$tmp/runs.j
 "$zcube" run "${hi[@]}" --host-latency 275us --host-bandwidth 2.8MBps --report "$tmp/hi.json" \
   >"$tmp/hi.out" 2>&1
 rc=$?
-grep -q "what-if: --host-latency 275 us (host link start-up)" "$tmp/hi.out" &&
-  grep -q "what-if: --host-bandwidth 2.8 MB/s (host link bandwidth)" "$tmp/hi.out" &&
+grep -q "what-if: --host-latency 275 us (host link start-up" "$tmp/hi.out" &&
+  grep -q "what-if: --host-bandwidth 2.8 MB/s (host link bandwidth" "$tmp/hi.out" &&
   /usr/bin/python3 -c '
 import json, sys
 r = json.load(open(sys.argv[1]))
@@ -300,5 +300,28 @@ got = {(round(r["what_if"]["host_latency_s"] * 1e6, 6), r["what_if"]["host_bandw
 assert got == {(1000, 1e6), (1000, 2.8e6), (275, 1e6), (275, 2.8e6)}, got
 EOF
 expect sweep-host-link-columns $?
+
+# --- relative what-ifs: x0.1 and x1 on the iPSC/2 give the times of 27.5us and 275us -------------
+rel=(sweep --algorithm pair-rs,aapc-hbp --scene scenes/kurc/1pot.json --size 64x64 --nodes 4
+  --cpu-scale 0.5 --no-plot)
+"$zcube" "${rel[@]}" --latency x0.1,x1 --bandwidth x2 --out "$tmp/rel" >/dev/null 2>&1 &&
+  "$zcube" "${rel[@]}" --latency 27.5us,275us --bandwidth 5.6MBps --out "$tmp/abs" \
+    >/dev/null 2>&1 &&
+  /usr/bin/python3 - "$tmp/rel/sweep.csv" "$tmp/abs/sweep.csv" <<'EOF'
+import csv, sys
+rel, ab = (list(csv.DictReader(open(f))) for f in sys.argv[1:])
+assert len(rel) == len(ab) == 4, (rel, ab)
+for r, a in zip(rel, ab):
+    assert r["status"] == a["status"] == "ok", (r, a)
+    for k in ("virtual_s", "timed_s"):
+        x, y = float(r[k]), float(a[k])
+        assert abs(x - y) <= 1e-9 * y, (k, r, a)
+    assert r["latency_s"] == "" and float(r["latency_factor"]) in (0.1, 1.0), r
+    assert a["latency_factor"] == "" and float(a["latency_s"]) in (27.5e-6, 275e-6), a
+EOF
+expect sweep-relative-equals-absolute $?
+usage_error sweep-relative-malformed "--latency 'x': expected" "$zcube" sweep --latency x,x1 \
+  --out "$tmp/bad"
+usage_error run-relative-out-of-range "--latency 'x1e+08" "$zcube" run --latency x1e8 --size 8x8
 
 exit $fail

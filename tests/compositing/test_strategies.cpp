@@ -34,7 +34,7 @@ nlohmann::json run(const Algorithm& a, const std::string& picture, int P, int si
   c.options.values["picture"] = picture;
   if (!radix.empty()) c.options.values["radix"] = radix;
   validate_options(a, c.options, cube);
-  c.overrides.memory_bytes = 64.0 * 1048576;
+  c.what_ifs.set("memory", {64.0 * 1048576});
   return run_simulation_isolated(c);
 }
 
@@ -107,7 +107,7 @@ TEST(Compositing, TheStudyTimesEveryContenderFromOneRendering) {
   c.algorithm = "compositing-study";
   c.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/kurc/2pot.json";
   c.width = c.height = 96;
-  c.overrides.memory_bytes = 64.0 * 1048576;
+  c.what_ifs.set("memory", {64.0 * 1048576});
   const auto r = run_simulation_isolated(c);
   ASSERT_EQ(r["status"], "ok") << r.dump();
   const auto names = compositing_contenders(16);

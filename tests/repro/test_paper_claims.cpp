@@ -184,7 +184,7 @@ struct BlazekRuns {
         c.scene_path = kRoot + "/scenes/blazek/thesis_spheres_64.json";
         c.width = c.height = 512;
         c.compare_with_sequential = false;
-        c.overrides.memory_bytes = 16.0 * 1048576; // ch. IV: "up to sixteen megabytes"
+        c.what_ifs.set("memory", {16.0 * 1048576}); // ch. IV: "up to sixteen megabytes"
         if (std::string(m) == "host-initiated") c.options.values["packet"] = "100";
         const auto r = run_simulation_isolated(c);
         EXPECT_EQ(r["status"], "ok") << m << ": " << r.value("error", "");

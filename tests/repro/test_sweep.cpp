@@ -65,7 +65,7 @@ TEST(Sweep, ExpandsTheCartesianProductFirstAxisSlowest) {
       EXPECT_NE(p.error.find("power of two"), std::string::npos);
     }
   }
-  EXPECT_DOUBLE_EQ(*pts[1].config->overrides.latency_s, 1e-3);
+  EXPECT_DOUBLE_EQ(pts[1].config->what_ifs.get("latency")->value, 1e-3);
   EXPECT_THROW(split_list("1,,2", "nodes"), UsageError);
   EXPECT_THROW(split_list("", "nodes"), UsageError);
   const auto bad = expand_sweep({{"algorithm", {"elastic"}}, {"packet", {"10"}}}, "x.json");

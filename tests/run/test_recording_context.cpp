@@ -72,6 +72,6 @@ TEST(Memory, ExceedingNodeMemoryFailsAndSaysWhereAndByHowMuch) {
   const std::string e = r["error"];
   EXPECT_NE(e.find("node 0"), std::string::npos) << e;
   EXPECT_NE(e.find("over"), std::string::npos) << e;
-  c.overrides.memory_bytes = 64.0 * 1048576;
+  c.what_ifs.set("memory", {64.0 * 1048576});
   EXPECT_EQ(run_simulation_isolated(c)["status"], "ok");
 }

@@ -80,7 +80,7 @@ TEST(Bands, RetimedRunsAgreeWithTheSimulationAndHoldThePoint) {
 TEST(Bands, WhatIfDifferenceIsNarrowerThanTheSumOfItsBands) {
   SimConfig base = paper_run("ipsc2", 16, "pair-rs", "scenes/kurc/2pot.json", 200);
   SimConfig fast = base;
-  fast.overrides.latency_s = 27.5e-6;
+  fast.what_ifs.set("latency", {27.5e-6});
   const BandsRequest req{.draws = 200, .seed = 3};
   const auto a = run_banded(base, req), b = run_banded(fast, req);
   const auto& va = a["bands"]["values"]["timed_s"];

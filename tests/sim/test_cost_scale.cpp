@@ -31,7 +31,7 @@ TEST(Scaling, VirtualTimeScalesExactlyWithAGlobalCostFactor) {
     const double s1 = run_simulation_isolated(base)["virtual_time_s"].get<double>();
     for (double k : {1e-9, 1e-3, 7.0, 1e6}) {
       SimConfig c = base;
-      c.overrides.cost_scale = k;
+      c.what_ifs.set("cost-scale", {k});
       expect_rel(run_custom(c, work)["virtual_time_s"].get<double>(), k * t1, 1e-12,
                  std::string("collectives, k=") + std::to_string(k) + " " + fidelity_name(f));
       expect_rel(run_simulation_isolated(c)["virtual_time_s"].get<double>(), k * s1, 1e-12,

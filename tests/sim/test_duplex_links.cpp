@@ -18,9 +18,9 @@ const Fidelity kAll[] = {Fidelity::Analytic, Fidelity::Flow, Fidelity::Circuit};
 // Nodes 0 and 1 (neighbours) send kBytes to each other, the second one `delay` seconds later, or
 // only node 0 sends when `both` is false. Returns the virtual time of the run.
 double exchange(const std::string& machine, Fidelity f, bool both, double delay = 0,
-                Overrides o = {}) {
+                WhatIfs o = {}) {
   SimConfig cfg = sim_config(machine, 2, Topology::Ring, f);
-  cfg.overrides = o;
+  cfg.what_ifs = o;
   const auto r = run_custom(cfg, [=](NodeContext& ctx) {
     Comm& c = ctx.comm();
     const int other = 1 - c.rank();
@@ -72,8 +72,8 @@ TEST(DuplexLinks, StaggeredExchangeSpeedsUpWhenOneDirectionFinishes) {
 // A what-if link twice as fast one way is twice as fast both ways: 4.7 MB/s in all.
 TEST(DuplexLinks, WhatIfBandwidthScalesTheTwoWayTotal) {
   const NetworkParams& n = machine_spec("volvox").net;
-  Overrides o;
-  o.bandwidth_Bps = 3.4e6;
+  WhatIfs o;
+  o.set("bandwidth", {3.4e6});
   for (Fidelity f : kAll)
     expect_rel(exchange("volvox", f, true, 0, o), n.startup(kBytes) + kBytes / 2.35e6, 1e-9,
                fidelity_name(f));

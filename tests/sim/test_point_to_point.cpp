@@ -31,12 +31,12 @@ namespace {
 // One simulation per message size, so every measurement is taken while the virtual clock is
 // still small (a difference of clock readings near 1 s cannot resolve 1e-12 of 75 us).
 nlohmann::json pingpong(const std::string& m, int P, Fidelity f, Topology t = Topology::Cube,
-                        Overrides o = {}, const std::string& to = "1,3,7,15") {
+                        WhatIfs o = {}, const std::string& to = "1,3,7,15") {
   nlohmann::json all = {{"status", "ok"}, {"results", nlohmann::json::array()}};
   for (const char* size : {"0B", "1B", "64B", "100B", "101B", "1024B", "65536B"}) {
     SimConfig c = sim_config(m, P, t, f);
     c.algorithm = "pingpong";
-    c.overrides = o;
+    c.what_ifs = o;
     c.options.values = {{"from", "0"}, {"to", to}, {"sizes", size}};
     auto r = run_simulation_isolated(c);
     if (r["status"] != "ok") return r;
@@ -89,8 +89,8 @@ TEST(PointToPoint, RingDistancesAndZeroLatency) {
   for (const auto& x : r["results"])
     expect_rel(x["one_way_s"].get<double>(),
                net.message_time(x["bytes"].get<double>(), x["hops"].get<int>()), 1e-12, x.dump());
-  Overrides o;
-  o.latency_s = 0;
+  WhatIfs o;
+  o.set("latency", {0});
   auto z = pingpong("ipsc2", 4, Fidelity::Flow, Topology::Cube, o, "1,3");
   ASSERT_EQ(z["status"], "ok") << z.dump();
   ASSERT_FALSE(z["results"].empty()) << z.dump();

@@ -76,12 +76,12 @@ SimConfig point(const std::string& algorithm, const std::string& scene, int node
 std::vector<SimConfig> other_machines(const SimConfig& a) {
   SimConfig b = a, c = a, d = a;
   b.machine = "ipsc860";
-  c.overrides.latency_s = 27.5e-6;
-  c.overrides.bandwidth_Bps = 11e6;
-  c.overrides.cpu_scale = 0.3;
+  c.what_ifs.set("latency", {27.5e-6});
+  c.what_ifs.set("bandwidth", {11e6});
+  c.what_ifs.set("cpu-scale", {0.3});
   c.fidelity = Fidelity::Flow;
-  d.overrides.per_hop_s = 40e-6;
-  d.overrides.cpu_scale = 2.5;
+  d.what_ifs.set("per-hop", {40e-6});
+  d.what_ifs.set("cpu-scale", {2.5});
   d.fidelity = Fidelity::Analytic;
   return {b, c, d};
 }
@@ -124,7 +124,7 @@ TEST(Replay, CompositingStudy) {
 TEST(Replay, OutOfNodeMemoryAtTheSameCall) {
   const SimConfig a = point("zbuf-exc", "kurc/2pot.json", 8, 256);
   SimConfig b = a;
-  b.overrides.memory_bytes = 1.2e6;
+  b.what_ifs.set("memory", {1.2e6});
   const auto full = run_simulation_isolated(b);
   ASSERT_EQ(full["status"], "out_of_memory") << full.dump();
   EXPECT_EQ(full["error"].get<std::string>().find("operating system"), std::string::npos)
@@ -157,7 +157,7 @@ TEST(Replay, DivergenceFallsBackToAFullRun) {
   SimConfig a = sim_config("ipsc2", 4, Topology::Cube, Fidelity::Circuit);
   a.custom = algo;
   SimConfig b = a;
-  b.overrides.cpu_scale = 1e-5;
+  b.what_ifs.set("cpu-scale", {1e-5});
   const ReplayCounts n = expect_replays_exact(a, {b});
   EXPECT_EQ(n.diverged, 1u);
   EXPECT_EQ(n.replayed, 0u);

@@ -24,11 +24,11 @@
 using namespace zc;
 using namespace zc::test;
 
-TEST(Overrides, WhatIfFlagsChangeTheFormula) {
+TEST(WhatIfs, WhatIfFlagsChangeTheFormula) {
   SimConfig c = sim_config("ipsc860", 8, Topology::Cube, Fidelity::Analytic);
-  c.overrides.latency_s = 1e-3;
-  c.overrides.bandwidth_Bps = 1e6;
-  c.overrides.per_hop_s = 50e-6;
+  c.what_ifs.set("latency", {1e-3});
+  c.what_ifs.set("bandwidth", {1e6});
+  c.what_ifs.set("per-hop", {50e-6});
   auto t = one_way(c, "1,7", "10B,1000B");
   expect_rel(t.at({10.0, 1}), 1e-3 + 10e-6, 1e-12, "short");
   expect_rel(t.at({1000.0, 3}), 1e-3 + 1000e-6 + 2 * 50e-6, 1e-12, "long, 3 hops");
@@ -42,13 +42,35 @@ TEST(Overrides, WhatIfFlagsChangeTheFormula) {
   s.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/teapot.json";
   s.width = s.height = 96;
   const double t1 = vtime(run_simulation_isolated(s));
-  s.overrides.cpu_scale = 0.25;
+  s.what_ifs.set("cpu-scale", {0.25});
   expect_rel(vtime(run_simulation_isolated(s)), 0.25 * t1, 1e-12, "cpu-scale");
+}
+
+// --latency x0.1 on the iPSC/860 keeps its two message protocols (docs/machines.md), each start-up
+// a tenth, against the closed form start-up(bytes) + bytes * per-byte + (hops - 1) * per-hop;
+// --bandwidth x2 halves the per-byte cost. An absolute --latency gives both sizes one start-up.
+TEST(WhatIfs, RelativeWhatIfsKeepEveryProtocolAgainstTheClosedForm) {
+  const NetworkParams n = machine_spec("ipsc860").net;
+  ASSERT_NE(n.startup_short_s, n.startup_long_s);
+  for (const Fidelity fid : {Fidelity::Analytic, Fidelity::Circuit}) {
+    SimConfig c = sim_config("ipsc860", 8, Topology::Cube, fid);
+    c.what_ifs.set("latency", {0.1, true});
+    c.what_ifs.set("bandwidth", {2, true});
+    const auto t = one_way(c, "1,7", "10B,1000B");
+    const double per_byte = n.per_byte_s / 2;
+    expect_rel(t.at({10.0, 1}), 0.1 * n.startup_short_s + 10 * per_byte, 1e-12, "short, x0.1");
+    expect_rel(t.at({1000.0, 3}), 0.1 * n.startup_long_s + 1000 * per_byte + 2 * n.per_hop_s, 1e-12,
+               "long, 3 hops, x0.1");
+    c.what_ifs.set("latency", {7.5e-6, false});
+    const auto a = one_way(c, "1", "10B,1000B");
+    expect_rel(a.at({10.0, 1}), 7.5e-6 + 10 * per_byte, 1e-12, "short, 7.5us");
+    expect_rel(a.at({1000.0, 1}), 7.5e-6 + 1000 * per_byte, 1e-12, "long, 7.5us");
+  }
 }
 
 // A report says which model made its times: the what-ifs in force, every CPU cost (scaled), the
 // host link, and every option of the algorithm with its default.
-TEST(Overrides, TheReportStatesTheWhatIfsCpuCostsAndOptions) {
+TEST(WhatIfs, TheReportStatesTheWhatIfsCpuCostsAndOptions) {
   SimConfig s = sim_config("ipsc860", 2, Topology::Cube, Fidelity::Circuit);
   s.algorithm = "elastic";
   s.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/teapot.json";
@@ -61,8 +83,8 @@ TEST(Overrides, TheReportStatesTheWhatIfsCpuCostsAndOptions) {
   EXPECT_DOUBLE_EQ(plain["model"]["host_startup_s"].get<double>(), 1e-3);
   const double vt = plain["model"]["cpu_seconds"]["vertices_transformed"].get<double>();
   EXPECT_GT(vt, 0);
-  s.overrides.cpu_scale = 0.5;
-  s.overrides.latency_s = 20e-6;
+  s.what_ifs.set("cpu-scale", {0.5});
+  s.what_ifs.set("latency", {20e-6});
   const auto w = run_simulation_isolated(s);
   ASSERT_EQ(w.value("status", ""), "ok") << w.dump();
   EXPECT_DOUBLE_EQ(w["what_if"]["cpu_scale"].get<double>(), 0.5);
@@ -76,7 +98,7 @@ TEST(Overrides, TheReportStatesTheWhatIfsCpuCostsAndOptions) {
 // of n bytes takes host start-up + n / host bandwidth under the analytic fidelity, before and after
 // the what-if, and node 0's answer back as long; the report names them; the node channels keep
 // their figures.
-TEST(Overrides, HostLinkWhatIfsGiveTheHostMessagesClosedForm) {
+TEST(WhatIfs, HostLinkWhatIfsGiveTheHostMessagesClosedForm) {
   const double n = 4096;
   auto ha = std::make_shared<Algorithm>();
   ha->name = "test";
@@ -97,8 +119,8 @@ TEST(Overrides, HostLinkWhatIfsGiveTheHostMessagesClosedForm) {
   expect_rel(vtime(before), 2 * (1e-3 + n * 1e-6), 1e-12, "1 ms and 1 MB/s (the default link)");
   EXPECT_TRUE(before["what_if"].empty()) << before["what_if"].dump();
 
-  h.overrides.host_latency_s = 275e-6;
-  h.overrides.host_bandwidth_Bps = 2.8e6;
+  h.what_ifs.set("host-latency", {275e-6});
+  h.what_ifs.set("host-bandwidth", {2.8e6});
   const auto after = run_simulation_isolated(h);
   ASSERT_EQ(after.value("status", ""), "ok") << after.dump();
   const double one_way = 275e-6 + n / 2.8e6;
