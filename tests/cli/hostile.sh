@@ -203,10 +203,20 @@ usage regress-name-path "run name '../escape'" "$zcube" regress --runs "$tmp/pat
 usage calibrate-fix-bogus "--fix bogus" "$zcube" calibrate --fix bogus --out "$tmp/cal"
 usage calibrate-iterations "--max-iterations -1" "$zcube" calibrate --max-iterations -1 \
   --out "$tmp/cal"
+# Out of modelled memory is an outcome (a row, exit 0) unless --fail-on-oom makes it a failure.
 "$zcube" sweep --nodes 4 --memory 520KiB,16MiB --size 64x64 --no-plot --out "$tmp/sw" \
   >"$tmp/out" 2>&1
 rc=$?
-if [ $rc -ne 1 ] || ! grep -q "2 points, 1 failed" "$tmp/out"; then
+if [ $rc -ne 0 ] || ! grep -q "2 points, 0 failed, 1 out of memory" "$tmp/out" ||
+  ! grep -q ",out_of_memory," "$tmp/sw/sweep.csv"; then
+  bad "sweep-oom-point: exit $rc: $(tail -2 "$tmp/out")"
+else
+  echo "ok   sweep-oom-point (exit 0): $(tail -1 "$tmp/out")"
+fi
+"$zcube" sweep --nodes 4 --memory 520KiB,16MiB --size 64x64 --no-plot --out "$tmp/sw" \
+  --fail-on-oom >"$tmp/out" 2>&1
+rc=$?
+if [ $rc -ne 1 ] || ! grep -q "2 points, 1 failed, 1 out of memory" "$tmp/out"; then
   bad "sweep-failed-point: exit $rc: $(tail -2 "$tmp/out")"
 else
   echo "ok   sweep-failed-point (exit 1): $(tail -1 "$tmp/out")"
