@@ -7,6 +7,7 @@
 #include "cli/parse.hpp"
 #include "cli/paths.hpp"
 #include "cli/sim_options.hpp"
+#include "repro/provenance.hpp"
 #include "repro/simulate.hpp"
 #include "util/output_file.hpp"
 #include "util/stdout_result.hpp"
@@ -43,6 +44,7 @@ static int cmd_pingpong(std::vector<std::string> args) {
   if (!to.empty()) cfg.options.values["to"] = to;
   SimResult r = run_simulation(cfg);
   attach_paper_figures(r.report);
+  r.report["provenance"] = provenance();
   if (!report.empty()) write_result_file(report, r.report.dump(2) + "\n");
   if (!r.ok) {
     std::cerr << "zcube: error: " << r.error << "\n";

@@ -10,6 +10,7 @@
 #include "cli/paths.hpp"
 #include "raster/image_io.hpp"
 #include "raster/renderer.hpp"
+#include "repro/provenance.hpp"
 #include "scene/load.hpp"
 #include "util/image_size.hpp"
 #include "util/output_file.hpp"
@@ -66,6 +67,7 @@ static int cmd_render(std::vector<std::string> args) {
     j["counters"] = r.counters;
     j["image"] = {{"path", image}, {"sha256", sha}};
     j["host"] = {{"wall_time_s", r.wall_time_s}};
+    j["provenance"] = provenance();
     write_result_file(report, j.dump(2) + "\n");
   }
   std::cout << "image: " << image << "  (" << scene.width << "x" << scene.height << ", "

@@ -12,6 +12,7 @@
 #include "repro/band_text.hpp"
 #include "repro/gantt_chart.hpp"
 #include "repro/paper_figures.hpp"
+#include "repro/provenance.hpp"
 #include "repro/reproduce.hpp"
 #include "repro/simulate.hpp"
 #include "run/run_flags.hpp"
@@ -57,6 +58,7 @@ struct TimelineOutputs {
 // Writes the report and pictures and prints the summary (rank 0 only under MPI).
 static int finish(SimResult& r, const std::string& report, const std::string& image,
                   const std::string& depth, const TimelineOutputs& tl) {
+  r.report["provenance"] = provenance();
   if (!report.empty()) write_result_file(report, r.report.dump(2) + "\n");
   if (!tl.trace.empty()) write_trace(r.report, tl.trace);
   if (!tl.gantt.empty() && !draw_gantt(r.report, tl.gantt, source_root())) {

@@ -14,6 +14,7 @@
 #include <simgrid/version.h>
 
 #include "cli/command.hpp"
+#include "repro/provenance.hpp"
 #include "util/error.hpp"
 #include "util/error_text.hpp"
 
@@ -90,6 +91,7 @@ static int run_command(int argc, char** argv) {
     return 2;
   }
   std::vector<std::string> args(argv + 2, argv + argc);
+  zc::set_command_line({argv, argv + argc}); // the provenance every report carries
   try {
     return it->second.run(args);
   } catch (const zc::InputError& e) {

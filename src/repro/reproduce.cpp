@@ -19,6 +19,7 @@
 #include "repro/json_file.hpp"
 #include "repro/plot_script.hpp"
 #include "repro/progress.hpp"
+#include "repro/provenance.hpp"
 #include "repro/table.hpp"
 #include "run/batch.hpp"
 #include "util/child_cost.hpp"
@@ -351,7 +352,10 @@ int reproduce(const ReproduceOptions& o) {
     const std::string& dir = dirs[std::size_t(&p - plans.data())];
     std::filesystem::create_directories(dir);
     summaries += p.write(r, dir);
-    if (!p.name.empty()) name_plots_in(dir + "/README.md", o.plot_format);
+    if (!p.name.empty()) {
+      name_plots_in(dir + "/README.md", o.plot_format);
+      append_provenance(dir + "/README.md");
+    }
   }
   if (plots) {
     // The plots of what this run wrote: a directory kept because it holds more (the --full
@@ -376,6 +380,7 @@ int reproduce(const ReproduceOptions& o) {
   if (all) {
     write_text(o.out + "/README.md", top_readme(o, cfgs.size(), summaries, kept));
     name_plots_in(o.out + "/README.md", o.plot_format);
+    append_provenance(o.out + "/README.md");
   }
 
   if (plots) {
