@@ -104,6 +104,7 @@ void append_provenance(const std::string& readme) {
     if (!command.empty()) command += ' ';
     command += w.get<std::string>();
   }
+  if (command.empty()) command = "zcube"; // called from a program that recorded no command line
   std::ofstream out(readme, std::ios::app);
   out << "\n## Provenance\n\nWritten by `" << command << "`: " << provenance_text(p)
       << " (the schema of zcube's JSON outputs).\n";
