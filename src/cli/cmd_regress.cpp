@@ -133,6 +133,7 @@ int cmd_regress(std::vector<std::string> args) {
   // Every input read and checked, and every output checked, before any run (16 simulations).
   RegressOutcome o;
   o.tolerance = f.resolve_tolerance();
+  const auto runs = f.with.empty() ? read_regress_runs(f.runs_file) : std::vector<RegressRun>{};
   const auto before =
       f.against.empty() ? std::map<std::string, nlohmann::json>{} : read_report_dir(f.against);
   o.before = {f.against, check_report_schema(before, "--against", f.against, f.allow_schema)};
@@ -142,7 +143,7 @@ int cmd_regress(std::vector<std::string> args) {
     now = read_report_dir(f.with);
     o.after = {f.with, check_report_schema(now, "--with", f.with, f.allow_schema)};
   } else {
-    now = run_regress(read_regress_runs(f.runs_file), root, f.jobs, parse_sets(f.sets));
+    now = run_regress(runs, root, f.jobs, parse_sets(f.sets));
     o.after = {"now", provenance()};
   }
   if (!f.write.empty()) {
