@@ -4,15 +4,24 @@ The pictures are pyplot's, byte for byte: the same Figure, the same Agg renderer
 writer with the same options; only the bookkeeping around them is gone.
 """
 import contextlib
+import sys
 
-import matplotlib
+# The exit status of a plot script that found no matplotlib (or a module it needs): zcube's plot
+# launcher (src/repro/plot_script.hpp) tells it from a failed figure, and the plots are skipped
+# with this one line instead of a traceback per script.
+LIBRARY_MISSING = 3
+try:
+    import matplotlib
 
-matplotlib.use("Agg")
-import matplotlib.artist
-import matplotlib.axis
-import matplotlib.text
-from matplotlib.backends.backend_agg import FigureCanvasAgg, RendererAgg
-from matplotlib.figure import Figure
+    matplotlib.use("Agg")
+    import matplotlib.artist
+    import matplotlib.axis
+    import matplotlib.text
+    from matplotlib.backends.backend_agg import FigureCanvasAgg, RendererAgg
+    from matplotlib.figure import Figure
+except ImportError:
+    sys.stderr.write("matplotlib not found: plots not drawn\n")
+    sys.exit(LIBRARY_MISSING)
 
 matplotlib.rcParams["svg.hashsalt"] = "zcube"  # SVG ids from the content, not a random salt
 

@@ -7,8 +7,10 @@
 #include "cli/parse.hpp"
 #include "cli/paths.hpp"
 #include "cli/sim_options.hpp"
+#include "repro/provenance.hpp"
 #include "repro/simulate.hpp"
 #include "util/output_file.hpp"
+#include "util/stdout_result.hpp"
 
 namespace zc::cli {
 
@@ -25,9 +27,14 @@ static int cmd_pingpong(std::vector<std::string> args) {
   app.add_option("--to", to, "answering node(s), comma-separated (default: every other node)");
   app.add_option("--sizes", sizes, "message sizes with units, comma-separated")
       ->capture_default_str();
-  app.add_option("--report", report, "write the report JSON");
+  app.add_option("--report", report,
+                 "write the report JSON (- or /dev/stdout: to standard output, the table to "
+                 "standard error)");
   if (int rc = parse(app, args); rc >= 0) return rc;
-  check_output_path(report, "--report");
+  if (names_stdout(report))
+    reserve_stdout_for_result();
+  else
+    check_output_path(report, "--report");
   SimConfig cfg;
   sf.apply(cfg);
   cfg.algorithm = "pingpong";
@@ -36,7 +43,8 @@ static int cmd_pingpong(std::vector<std::string> args) {
   if (!to.empty()) cfg.options.values["to"] = to;
   SimResult r = run_simulation(cfg);
   attach_paper_figures(r.report);
-  if (!report.empty()) write_text_file(report, r.report.dump(2) + "\n");
+  r.report["provenance"] = provenance();
+  if (!report.empty()) write_result_file(report, r.report.dump(2) + "\n");
   if (!r.ok) {
     std::cerr << "zcube: error: " << r.error << "\n";
     return 1;

@@ -10,6 +10,7 @@
 #include "run/run_flags.hpp"
 #include "sim/simulation.hpp"
 #include "util/output_file.hpp"
+#include "util/stdout_result.hpp"
 
 namespace zc::cli {
 
@@ -61,9 +62,11 @@ static int cmd_platform(std::vector<std::string> args) {
   add_run_flag_options(app, given, [](const RunFlag& f) {
     return f.group == RunFlag::Group::WhatIf && f.name != "cost-scale";
   });
-  app.add_option("-o,--output", out, "write to this file instead of standard output");
+  app.add_option("-o,--output", out,
+                 "write to this file instead of standard output (-: standard output)");
   app.footer(whatif_help());
   if (int rc = parse(app, args); rc >= 0) return rc;
+  if (names_stdout(out)) out.clear(); // standard output, as without the flag
   check_output_path(out, "--output"); // before any work: a missing directory says so
 
   std::string command = "zcube platform --machine " + flags["machine"] + " --nodes " +

@@ -10,9 +10,11 @@
 #include "cli/paths.hpp"
 #include "raster/image_io.hpp"
 #include "raster/renderer.hpp"
+#include "repro/provenance.hpp"
 #include "scene/load.hpp"
 #include "util/image_size.hpp"
 #include "util/output_file.hpp"
+#include "util/stdout_result.hpp"
 
 namespace zc::cli {
 
@@ -30,12 +32,17 @@ static int cmd_render(std::vector<std::string> args) {
   app.add_option("--threads", threads, "host threads (the image is identical for any count)")
       ->check(CLI::Range(1, 256))
       ->capture_default_str();
-  app.add_option("--report", report, "write counters and wall time as JSON");
+  app.add_option("--report", report,
+                 "write counters and wall time as JSON (- or /dev/stdout: to standard output, "
+                 "the summary to standard error)");
   if (int rc = parse(app, args); rc >= 0) return rc;
   scene_path = data_file(scene_path);
   if (image.empty()) image = std::filesystem::path(scene_path).stem().string() + ".png";
 
-  check_output_paths({{"--image", image}, {"--depth", depth}, {"--report", report}});
+  if (names_stdout(report)) reserve_stdout_for_result();
+  check_output_paths({{"--image", image},
+                      {"--depth", depth},
+                      {"--report", names_stdout(report) ? std::string() : report}});
   check_image_path(image, "--image");
   check_image_path(depth, "--depth");
   LoadOptions lo;
@@ -60,7 +67,8 @@ static int cmd_render(std::vector<std::string> args) {
     j["counters"] = r.counters;
     j["image"] = {{"path", image}, {"sha256", sha}};
     j["host"] = {{"wall_time_s", r.wall_time_s}};
-    write_text_file(report, j.dump(2) + "\n");
+    j["provenance"] = provenance();
+    write_result_file(report, j.dump(2) + "\n");
   }
   std::cout << "image: " << image << "  (" << scene.width << "x" << scene.height << ", "
             << scene.triangles.size() << " triangles, " << r.counters.pixels_generated

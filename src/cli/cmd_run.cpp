@@ -12,6 +12,7 @@
 #include "repro/band_text.hpp"
 #include "repro/gantt_chart.hpp"
 #include "repro/paper_figures.hpp"
+#include "repro/provenance.hpp"
 #include "repro/reproduce.hpp"
 #include "repro/simulate.hpp"
 #include "run/run_flags.hpp"
@@ -21,6 +22,7 @@
 #include "trace/trace_file.hpp"
 #include "util/error.hpp"
 #include "util/output_file.hpp"
+#include "util/stdout_result.hpp"
 #ifdef ZCUBE_HAVE_MPI
 #include "mpi/mpi_run.hpp"
 #include "mpi/mpi_session.hpp"
@@ -54,9 +56,10 @@ struct TimelineOutputs {
 };
 
 // Writes the report and pictures and prints the summary (rank 0 only under MPI).
-static int finish(const SimResult& r, const std::string& report, const std::string& image,
+static int finish(SimResult& r, const std::string& report, const std::string& image,
                   const std::string& depth, const TimelineOutputs& tl) {
-  if (!report.empty()) write_text_file(report, r.report.dump(2) + "\n");
+  r.report["provenance"] = provenance();
+  if (!report.empty()) write_result_file(report, r.report.dump(2) + "\n");
   if (!tl.trace.empty()) write_trace(r.report, tl.trace);
   if (!tl.gantt.empty() && !draw_gantt(r.report, tl.gantt, source_root())) {
     std::cerr << "zcube: error: --gantt " << tl.gantt << ": scripts/plot_gantt.py failed\n";
@@ -128,7 +131,9 @@ static int cmd_run(std::vector<std::string> args) {
   std::string image, depth, report;
   app.add_option("--image", image, "write the (last) picture as PNG");
   app.add_option("--depth", depth, "write its depth as EXR");
-  app.add_option("--report", report, "write the report JSON");
+  app.add_option("--report", report,
+                 "write the report JSON (- or /dev/stdout: to standard output, the summary to "
+                 "standard error)");
   std::string backend = "sim";
   app.add_option("--backend", backend,
                  "sim (SimGrid, virtual time) or mpi (real processes under mpirun, measured time)")
@@ -158,13 +163,15 @@ static int cmd_run(std::vector<std::string> args) {
       std::cout << a.name << "  " << a.summary << "\n";
     return 0;
   }
+  // The report on standard output: nothing else may go there from now on.
+  if (names_stdout(report)) reserve_stdout_for_result();
   // Every output before the simulation, not after it: writable, not a directory, each its own file.
   if (!sensitivity_plot.empty()) {
     check_tornado_path(sensitivity_plot);
     bands.sensitivity = true;
   }
   check_output_paths({{"--sensitivity-plot", sensitivity_plot},
-                      {"--report", report},
+                      {"--report", names_stdout(report) ? std::string() : report},
                       {"--image", image},
                       {"--depth", depth},
                       {"--trace", tl.trace},

@@ -14,6 +14,7 @@
 #include <simgrid/version.h>
 
 #include "cli/command.hpp"
+#include "repro/provenance.hpp"
 #include "run/run_flags.hpp"
 #include "util/error.hpp"
 #include "util/error_text.hpp"
@@ -99,6 +100,7 @@ static int run_command(int argc, char** argv) {
   }
   std::vector<std::string> args(argv + 2, argv + argc);
   if (help) args = {"--help"};
+  zc::set_command_line({argv, argv + argc}); // the provenance every report carries
   try {
     return it->second.run(args);
   } catch (const zc::InputError& e) {

@@ -10,6 +10,7 @@
 #include "machine/cpu_model.hpp"
 #include "machine/units.hpp"
 #include "repro/calibrate.hpp"
+#include "repro/provenance.hpp"
 #include "util/output_file.hpp"
 
 namespace zc {
@@ -362,6 +363,7 @@ void write_calibration_results(const nlohmann::json& fit, const std::string& dir
   readme_signs(md, fit);
   readme_targets(md, fit);
   write_text_file(dir + "/README.md", md.str());
+  append_provenance(dir + "/README.md");
 }
 
 } // namespace zc

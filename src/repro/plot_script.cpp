@@ -38,14 +38,30 @@ std::string unit_tables() {
 
 } // namespace
 
-bool run_plot_script(const std::string& root, const std::vector<std::string>& args) {
+PlotOutcome plot_outcome(int wait_status) {
+  if (!WIFEXITED(wait_status)) return PlotOutcome::failed;
+  if (WEXITSTATUS(wait_status) == 0) return PlotOutcome::drawn;
+  return WEXITSTATUS(wait_status) == kPlotLibraryMissing ? PlotOutcome::library_missing
+                                                         : PlotOutcome::failed;
+}
+
+PlotOutcome plot_script_outcome(const std::string& root, const std::vector<std::string>& args) {
   std::vector<std::string> a = {"--units", unit_tables()};
   a.insert(a.end(), args.begin(), args.end());
-  return run_python_script(root, "scripts/plot_results.py", a);
+  return python_script_outcome(root, "scripts/plot_results.py", a);
+}
+
+bool run_plot_script(const std::string& root, const std::vector<std::string>& args) {
+  return plot_script_outcome(root, args) == PlotOutcome::drawn;
 }
 
 bool run_python_script(const std::string& root, const std::string& script,
                        const std::vector<std::string>& args) {
+  return python_script_outcome(root, script, args) == PlotOutcome::drawn;
+}
+
+PlotOutcome python_script_outcome(const std::string& root, const std::string& script,
+                                  const std::vector<std::string>& args) {
   std::vector<std::string> words = {python_interpreter(), root + "/" + script};
   words.insert(words.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -53,11 +69,12 @@ bool run_python_script(const std::string& root, const std::string& script,
     argv.push_back(w.data());
   argv.push_back(nullptr);
   pid_t pid = 0;
-  if (posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0) return false;
+  if (posix_spawnp(&pid, argv[0], nullptr, nullptr, argv.data(), environ) != 0)
+    return PlotOutcome::failed;
   int status = 0;
   while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return false;
-  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    if (errno != EINTR) return PlotOutcome::failed;
+  return plot_outcome(status);
 }
 
 BackgroundPlots::BackgroundPlots(const std::string& root) {
@@ -106,17 +123,18 @@ void BackgroundPlots::say(const std::string& line) {
   sigaction(SIGPIPE, &old, nullptr);
 }
 
-bool BackgroundPlots::wait() {
+PlotOutcome BackgroundPlots::wait() {
   if (to_script_ >= 0) {
     close(to_script_); // end of input: nothing more is drawn
     to_script_ = -1;
   }
-  if (pid_ <= 0) return false;
+  if (pid_ <= 0) return outcome_;
   if (!drawing_) kill(pid_, SIGTERM); // (an error before draw(): not worth its start-up)
   int status = 0;
   wait_child(pid_, &status, 0, &cost_);
   pid_ = 0;
-  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  outcome_ = plot_outcome(status);
+  return outcome_;
 }
 
 } // namespace zc

@@ -12,6 +12,7 @@
 #include <set>
 
 #include "repro/json_file.hpp"
+#include "repro/provenance.hpp"
 #include "repro/sweep.hpp"
 #include "repro/table.hpp"
 #include "run/batch.hpp"
@@ -119,17 +120,18 @@ std::string cell(const nlohmann::json& v) {
   return s;
 }
 
-bool close_enough(const nlohmann::json& a, const nlohmann::json& b, double rtol) {
+bool close_enough(const nlohmann::json& a, const nlohmann::json& b, double rtol, double atol) {
   if (a == b) return true;
-  if (!a.is_number() || !b.is_number() || rtol <= 0) return false;
+  if (!a.is_number() || !b.is_number()) return false;
   const double x = a.get<double>(), y = b.get<double>();
-  return std::fabs(x - y) <= rtol * std::max(std::fabs(x), std::fabs(y));
+  return std::fabs(x - y) <= std::max(atol, rtol * std::max(std::fabs(x), std::fabs(y)));
 }
 
 // Leaf by leaf; a side that lacks an object or an array is taken as empty, so every row is one
 // value and never a whole sub-report.
 void diff_json(const std::string& run, const std::string& path, const nlohmann::json& a,
-               const nlohmann::json& b, double rtol, std::vector<RegressDiff>& out) {
+               const nlohmann::json& b, const RegressTolerance& tol,
+               std::vector<RegressDiff>& out) {
   const bool recurse = (a.is_structured() || b.is_structured()) &&
                        (a.is_null() || b.is_null() || a.type() == b.type());
   if (recurse) {
@@ -151,11 +153,13 @@ void diff_json(const std::string& run, const std::string& path, const nlohmann::
           keys.insert(std::to_string(i));
     }
     for (const auto& k : keys)
-      diff_json(run, path.empty() ? k : path + "." + k, child(a, k), child(b, k), rtol, out);
+      if (!(path.empty() && k == "provenance")) // where the report came from, not what it says
+        diff_json(run, path.empty() ? k : path + "." + k, child(a, k), child(b, k), tol, out);
     return;
   }
-  if (close_enough(a, b, rtol)) return;
-  RegressDiff d{run, path, cell(a), cell(b), 0};
+  const QuantityKind kind = quantity_kind(path, a.is_null() ? b : a);
+  if (close_enough(a, b, tol.rtol(kind), tol.atol)) return;
+  RegressDiff d{run, path, cell(a), cell(b), 0, kind, tol.text(kind)};
   if (a.is_number() && b.is_number() && a.get<double>() != 0)
     d.rel = (b.get<double>() - a.get<double>()) / std::fabs(a.get<double>());
   out.push_back(d);
@@ -168,25 +172,69 @@ std::string status_text(const nlohmann::json& r) {
 
 } // namespace
 
+QuantityKind quantity_kind(const std::string& path, const nlohmann::json& value) {
+  if (!value.is_number()) return QuantityKind::text;
+  const std::string leaf = path.substr(path.rfind('.') + 1); // npos + 1: the whole path
+  if (leaf.find("bytes") != std::string::npos) return QuantityKind::bytes;
+  if (path.starts_with("phases.") || leaf.ends_with("_s") || leaf == "load_imbalance")
+    return QuantityKind::time;
+  return QuantityKind::count;
+}
+
+const char* kind_name(QuantityKind kind) {
+  switch (kind) {
+  case QuantityKind::time:
+    return "time";
+  case QuantityKind::count:
+    return "count";
+  case QuantityKind::bytes:
+    return "bytes";
+  case QuantityKind::text:
+    break;
+  }
+  return "text";
+}
+
+double RegressTolerance::rtol(QuantityKind kind) const {
+  switch (kind) {
+  case QuantityKind::time:
+    return rtol_time;
+  case QuantityKind::count:
+    return rtol_count;
+  case QuantityKind::bytes:
+    return rtol_bytes;
+  case QuantityKind::text:
+    break;
+  }
+  return 0;
+}
+
+std::string RegressTolerance::text(QuantityKind kind) const {
+  if (kind == QuantityKind::text) return "exact";
+  return "rtol " + num(rtol(kind), 3) + ", atol " + num(atol, 3);
+}
+
 std::vector<RegressDiff> compare_reduced(const std::map<std::string, nlohmann::json>& before,
                                          const std::map<std::string, nlohmann::json>& after,
-                                         double rtol) {
+                                         const RegressTolerance& tolerance) {
   std::vector<RegressDiff> out;
   for (const auto& [name, a] : before) {
     auto it = after.find(name);
     if (it == after.end()) {
-      out.push_back({name, "(run)", "present", "missing", 0});
+      out.push_back({name, "(run)", "present", "missing", 0, QuantityKind::text, "exact"});
       continue;
     }
     const nlohmann::json& b = it->second;
     if (a.value("status", "error") != b.value("status", "error")) {
-      out.push_back({name, "status", cell(status_text(a)), cell(status_text(b)), 0});
+      out.push_back({name, "status", cell(status_text(a)), cell(status_text(b)), 0,
+                     QuantityKind::text, "exact"});
       continue;
     }
-    diff_json(name, "", a, b, rtol, out);
+    diff_json(name, "", a, b, tolerance, out);
   }
   for (const auto& [name, b] : after)
-    if (!before.count(name)) out.push_back({name, "(run)", "missing", "present", 0});
+    if (!before.count(name))
+      out.push_back({name, "(run)", "missing", "present", 0, QuantityKind::text, "exact"});
   return out;
 }
 
@@ -218,8 +266,30 @@ std::map<std::string, nlohmann::json> read_report_dir(const std::string& dir) {
 
 void write_report_dir(const std::map<std::string, nlohmann::json>& reps, const std::string& dir) {
   prepare_output_dir(dir, "--write");
-  for (const auto& [name, r] : reps)
-    write_text(dir + "/" + name + ".json", r.dump(1) + "\n");
+  const nlohmann::json stamp = provenance(ProvenanceFor::committed_file);
+  for (const auto& [name, r] : reps) {
+    nlohmann::json stamped = r;
+    stamped["provenance"] = stamp;
+    write_text(dir + "/" + name + ".json", stamped.dump(1) + "\n");
+  }
+}
+
+nlohmann::json check_report_schema(const std::map<std::string, nlohmann::json>& reps,
+                                   const std::string& flag, const std::string& dir,
+                                   bool allow_other_schema) {
+  nlohmann::json found;
+  for (const auto& [name, r] : reps) {
+    const int schema = schema_version_of(r);
+    if (schema != kSchemaVersion && !allow_other_schema)
+      throw UsageError(flag + " " + dir + ": " + name + ".json has schema " +
+                       std::to_string(schema) +
+                       (schema == 0 ? " (no provenance: written before zcube recorded one)" : "") +
+                       ", this zcube's is " + std::to_string(kSchemaVersion) +
+                       ": rewrite it with zcube regress --write, or compare anyway with "
+                       "--allow-schema");
+    if (found.is_null() && r.contains("provenance")) found = r["provenance"];
+  }
+  return found;
 }
 
 } // namespace zc

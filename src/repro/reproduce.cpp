@@ -19,6 +19,7 @@
 #include "repro/json_file.hpp"
 #include "repro/plot_script.hpp"
 #include "repro/progress.hpp"
+#include "repro/provenance.hpp"
 #include "repro/table.hpp"
 #include "run/batch.hpp"
 #include "util/child_cost.hpp"
@@ -341,7 +342,10 @@ int reproduce(const ReproduceOptions& o) {
     const std::string& dir = dirs[std::size_t(&p - plans.data())];
     std::filesystem::create_directories(dir);
     summaries += p.write(r, dir);
-    if (!p.name.empty()) name_plots_in(dir + "/README.md", o.plot_format);
+    if (!p.name.empty()) {
+      name_plots_in(dir + "/README.md", o.plot_format);
+      append_provenance(dir + "/README.md");
+    }
   }
   if (plots) {
     // The plots of what this run wrote: a directory kept because it holds more (the --full
@@ -366,12 +370,14 @@ int reproduce(const ReproduceOptions& o) {
   if (all) {
     write_text(o.out + "/README.md", top_readme(o, cfgs.size(), summaries, kept));
     name_plots_in(o.out + "/README.md", o.plot_format);
+    append_provenance(o.out + "/README.md");
   }
 
   if (plots) {
     if (o.verbose)
       std::cerr << "reproduce: drawing the plots and " << chart_count << " space-time diagrams\n";
-    if (!plots->wait())
+    // Without matplotlib the script said so in one line; the tables stand without their plots.
+    if (plots->wait() == PlotOutcome::failed)
       std::cerr << "reproduce: plots not drawn (scripts/plot_results.py failed; it needs "
                    "python3-matplotlib, which scripts/setup.sh installs)\n";
   }

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "algo/algorithm.hpp"
+#include "repro/provenance.hpp"
 #include "repro/reproduce.hpp"
 #include "repro/table.hpp"
 #include "util/error.hpp"
@@ -336,8 +337,9 @@ void write_sweep(const std::vector<SweepAxis>& axes, const nlohmann::json& rows,
   nlohmann::json axes_j = nlohmann::json::array();
   for (const auto& ax : axes)
     axes_j.push_back({{"flag", ax.flag}, {"values", ax.values}});
-  write_text(dir + "/sweep.json",
-             nlohmann::json{{"axes", axes_j}, {"rows", rows}, {"reports", reps}}.dump(1) + "\n");
+  const nlohmann::json doc = {
+      {"provenance", provenance()}, {"axes", axes_j}, {"rows", rows}, {"reports", reps}};
+  write_text(dir + "/sweep.json", doc.dump(1) + "\n");
 }
 
 } // namespace zc

@@ -94,6 +94,11 @@ struct PrivateDir {
 
 void check_output_path(const std::string& path, const std::string& flag) {
   if (path.empty()) return;
+  // Not a file named "-": the flags that can write to standard output take it before this check
+  // (util/stdout_result.hpp), and the others cannot.
+  if (path == "-")
+    throw UsageError(flag + " '-': this output is a file (only --report and platform's --output "
+                            "take '-' for standard output)");
   std::error_code ec;
   if (fs::is_directory(path, ec))
     throw UsageError(flag + " '" + path + "': is a directory, not a file name");

@@ -12,8 +12,8 @@ namespace zc {
 
 // UsageError naming `flag` when `path` cannot be created: its directory is missing, not a
 // directory or not writable, or the path is itself a directory, a FIFO or a socket (writing would
-// wait for a reader). An empty path (flag not given) is
-// fine.
+// wait for a reader), or "-" (standard output: util/stdout_result.hpp). An empty path (flag not
+// given) is fine.
 void check_output_path(const std::string& path, const std::string& flag);
 
 // check_output_path for each (flag, path) given, and no two of them naming the same file.
