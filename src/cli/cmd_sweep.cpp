@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include "cli/command.hpp"
 #include "cli/parse.hpp"
@@ -92,6 +94,8 @@ static void check_plot_axes(const std::vector<SweepAxis>& axes, const std::strin
 // The flags of zcube sweep besides the swept run flags.
 struct SweepOptions {
   std::string out = "sweep", plot_x, plot_y = "virtual_s", plot_format = "png", design = "grid";
+  std::string table;              // columns of the Markdown table printed after the run
+  std::vector<std::string> where; // column=value: the rows that table shows
   int jobs = default_jobs();
   bool no_plot = false, baseline = false, yes = false, fail_on_oom = false;
   CLI::Option* jobs_opt = nullptr;
@@ -123,6 +127,12 @@ static void add_sweep_options(CLI::App& app, SweepOptions& o) {
                "also run each algorithm's one-node reference (sequential; scanline for Kurc et "
                "al.; node-initiated for Blazek) for every combination of the other flags, so "
                "every row gets speedup and efficiency");
+  app.add_option("--table", o.table,
+                 "print a Markdown table of these comma-separated columns after the run (e.g. "
+                 "algorithm,latency,timed_s,speedup; numbers to 4 significant digits)");
+  app.add_option("--where", o.where,
+                 "column=value: only the rows whose column reads value go into --table; "
+                 "repeatable");
   app.add_flag("--yes", o.yes,
                "run a sweep of more than " + std::to_string(kSweepPointsWithoutYes) + " points");
   app.add_flag("--fail-on-oom", o.fail_on_oom,
@@ -152,6 +162,10 @@ static std::vector<SweepPoint> design_points(const SweepOptions& o, std::vector<
 static void check_sweep(SweepOptions& o, const std::vector<SweepAxis>& axes,
                         const std::vector<SweepPoint>& points) {
   check_quantities(axes);
+  for (const auto& w : o.where)
+    if (w.find('=') == std::string::npos || w.front() == '=')
+      throw UsageError("--where '" + w + "': expected column=value (e.g. nodes=16)");
+  if (!o.where.empty() && o.table.empty()) throw UsageError("--where: chooses the rows of --table");
   if (o.plot_x.empty())
     for (const auto& ax : axes)
       if (ax.values.size() > 1) {
@@ -217,6 +231,45 @@ static std::vector<nlohmann::json> run_sweep_points(const std::vector<SweepPoint
 #endif
     return simulate_batch(cfgs, o.jobs, progress_printer("sweep", cfgs.size()));
   });
+}
+
+// A cell of --table: text as it is, numbers to 4 significant digits, nothing for null.
+static std::string table_cell(const nlohmann::json& v) {
+  if (v.is_null()) return "";
+  if (v.is_string()) return v.get<std::string>();
+  if (!v.is_number_float()) return v.dump();
+  std::ostringstream s;
+  s << std::setprecision(4) << v.get<double>();
+  return s.str();
+}
+
+// --table COLUMNS with --where column=value filters, as Markdown (UsageError for a column no row
+// has, checked before anything is printed).
+static std::string markdown_table(const nlohmann::json& rows, const SweepOptions& o) {
+  const auto cols = split_list(o.table, "table");
+  for (const auto& c : cols)
+    if (std::none_of(rows.begin(), rows.end(), [&](const auto& r) { return r.contains(c); }))
+      throw UsageError("--table " + c + ": no row has that column");
+  std::string t = "|", rule = "|";
+  for (const auto& c : cols) {
+    t += " " + c + " |";
+    rule += "---|";
+  }
+  t += "\n" + rule + "\n";
+  for (const auto& r : rows) {
+    bool keep = true;
+    for (const auto& w : o.where) {
+      const auto eq = w.find('=');
+      keep =
+          keep && r.contains(w.substr(0, eq)) && table_cell(r[w.substr(0, eq)]) == w.substr(eq + 1);
+    }
+    if (!keep) continue;
+    t += "|";
+    for (const auto& c : cols)
+      t += " " + table_cell(r.value(c, nlohmann::json(nullptr))) + " |";
+    t += "\n";
+  }
+  return t;
 }
 
 // Whether matplotlib can be imported by the interpreter the plots use.
@@ -315,6 +368,7 @@ static int cmd_sweep(std::vector<std::string> args) {
             << (oom ? ", " + std::to_string(oom) + " out of memory" : "") << "; wrote " << o.out
             << "/sweep.csv, sweep.json" << (not_drawn.empty() ? ", sweep." + o.plot_format : "")
             << "\n";
+  if (!o.table.empty()) std::cout << markdown_table(rows, o);
   return failed || plot_failed ? 1 : 0;
 }
 
