@@ -324,4 +324,10 @@ usage_error sweep-relative-malformed "--latency 'x': expected" "$zcube" sweep --
   --out "$tmp/bad"
 usage_error run-relative-out-of-range "--latency 'x1e+08" "$zcube" run --latency x1e8 --size 8x8
 
+# --- bash completion: the commands and a command's flags come from zcube itself ------------------
+/usr/bin/env bash -c 'source <("$1" completion bash)
+COMP_WORDS=("$1" sweep --lat); COMP_CWORD=2; _zcube; [ "${COMPREPLY[*]}" = --latency ] || exit 1
+COMP_WORDS=("$1" help swe); COMP_CWORD=2; _zcube; [ "${COMPREPLY[*]}" = sweep ]' _ "$zcube"
+expect completion-bash $?
+
 exit $fail
