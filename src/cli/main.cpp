@@ -1,6 +1,7 @@
 // zcube: simulator of 1990s hypercube multicomputers running parallel z-buffer renderers.
 // Exit status: 0 success, 2 usage or input error (one line on stderr naming file, line, reason),
 // 1 anything else (a failed write to standard output too).
+#include <algorithm>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -27,8 +28,9 @@ std::map<std::string, CommandInfo>& registry() {
 } // namespace zc::cli
 
 static void usage(std::ostream& os) {
-  os << "usage: zcube <command> [options]   (zcube help <command> or zcube <command> --help "
-        "for its options; zcube help flags for the run flags; zcube --version)\n\ncommands:\n";
+  os << "usage: zcube <command> [options] [-q]   (zcube help <command> or zcube <command> "
+        "--help for its options; zcube help flags for the run flags; -q: errors only on standard "
+        "error; zcube --version)\n\ncommands:\n";
   for (const auto& [name, info] : zc::cli::registry())
     os << "  " << name << std::string(name.size() < 12 ? 12 - name.size() : 1, ' ') << info.summary
        << "\n";
@@ -64,7 +66,55 @@ static int with_output_checked(int status) {
 
 static int run_command(int argc, char** argv);
 
+namespace {
+
+// -q: standard error keeps its error lines ("zcube: error: ...") and drops the rest (progress,
+// notes, the host-cost lines), line by line; standard output, the result, is untouched.
+class ErrorsOnly : public std::streambuf {
+public:
+  explicit ErrorsOnly(std::streambuf* to) : to_(to) {}
+
+protected:
+  int overflow(int c) override {
+    if (c == EOF) return 0;
+    line_.push_back(char(c));
+    if (c == '\n') {
+      if (line_.find("error") != std::string::npos)
+        to_->sputn(line_.data(), std::streamsize(line_.size()));
+      line_.clear();
+    }
+    return c;
+  }
+  int sync() override { return to_->pubsync(); }
+
+private:
+  std::streambuf* to_;
+  std::string line_;
+};
+
+// Takes -q/--quiet out of the arguments after the command; true when it was there.
+bool take_quiet(int& argc, char** argv) {
+  bool quiet = false;
+  int kept = 2;
+  for (int i = 2; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "-q" || a == "--quiet")
+      quiet = true;
+    else
+      argv[kept++] = argv[i];
+  }
+  argc = std::min(argc, kept);
+  return quiet;
+}
+
+} // namespace
+
 int main(int argc, char** argv) {
+  static ErrorsOnly errors_only(std::cerr.rdbuf());
+  if (argc > 2 && take_quiet(argc, argv)) {
+    std::cerr.rdbuf(&errors_only);
+    setenv("ZCUBE_QUIET", "1", 1); // the progress lines written straight to descriptor 2
+  }
   return with_output_checked(run_command(argc, argv));
 }
 

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
+#include <cstdlib>
 #include <functional>
 #include <memory>
 #include <mutex>
@@ -104,6 +105,7 @@ private:
 // `total`: the number of points, when known before the first one completes.
 inline std::function<void(const BatchProgress&)> progress_printer(const std::string& label,
                                                                   std::size_t total = 0) {
+  if (std::getenv("ZCUBE_QUIET")) return {}; // zcube -q: errors only
   auto line = std::make_shared<ProgressLine>(label, total);
   return [line](const BatchProgress& p) { line->update(p); };
 }

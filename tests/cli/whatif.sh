@@ -330,4 +330,12 @@ COMP_WORDS=("$1" sweep --lat); COMP_CWORD=2; _zcube; [ "${COMPREPLY[*]}" = --lat
 COMP_WORDS=("$1" help swe); COMP_CWORD=2; _zcube; [ "${COMPREPLY[*]}" = sweep ]' _ "$zcube"
 expect completion-bash $?
 
+# --- -q: errors only on standard error, the result untouched -------------------------------------
+"$zcube" sweep --nodes 1,2 --size 16x16 --no-plot --out "$tmp/q" -q >"$tmp/q.out" 2>"$tmp/q.err"
+[ $? -eq 0 ] && [ ! -s "$tmp/q.err" ] && grep -q "2 points, 0 failed" "$tmp/q.out"
+expect quiet-sweep $? "$(cat "$tmp/q.err")"
+"$zcube" run --size 8x8 --memory 1KiB -q >/dev/null 2>"$tmp/q.err"
+[ $? -eq 1 ] && [ "$(wc -l <"$tmp/q.err")" -eq 1 ] && grep -q "zcube: error: node 0 out of memory" "$tmp/q.err"
+expect quiet-keeps-errors $? "$(cat "$tmp/q.err")"
+
 exit $fail
