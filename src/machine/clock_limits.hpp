@@ -7,7 +7,8 @@
 // are held to these bounds.
 namespace zc {
 
-constexpr double kMaxDelay_s = 3600;      // a message start-up, a per-hop cost: at most 1 h
-constexpr double kMinBandwidth_Bps = 1.0; // a channel's bandwidth: at least 1 B/s
+constexpr double kMaxDelay_s = 3600;        // a message start-up, a per-hop cost: at most 1 h
+constexpr double kMinBandwidth_Bps = 1.0;   // a channel's bandwidth: at least 1 B/s
+constexpr double kClockResolvedNs = 0x1p52; // virtual nanoseconds the clock resolves one by one
 
 } // namespace zc

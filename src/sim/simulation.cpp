@@ -16,6 +16,7 @@
 #include <xbt/config.hpp>
 
 #include "geometry/camera_path.hpp"
+#include "machine/clock_limits.hpp"
 #include "machine/platform_xml.hpp"
 #include "machine/units.hpp"
 #include "raster/image_io.hpp"
@@ -86,46 +87,67 @@ void apply_model_draw(const ModelDraw& d, PlatformModel& pm) {
 
 } // namespace
 
-SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformModel* model) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  const Algorithm& algo = cfg.custom ? *cfg.custom : find_algorithm(cfg.algorithm);
-  AlgorithmOptions options = cfg.options;
-  validate_options(algo, options, cfg.machine.ends_with(".xml") || cfg.topology == Topology::Cube);
+namespace {
 
+// The algorithm and its options, checked, and the scene (loaded here unless the caller has it).
+struct PreparedRun {
+  const Algorithm* algo = nullptr;
+  AlgorithmOptions options;
   Scene loaded;
+  const Scene* scene = nullptr;
+};
+
+PreparedRun prepare_run(const SimConfig& cfg, const Scene* preloaded) {
+  PreparedRun p;
+  p.algo = cfg.custom ? cfg.custom.get() : &find_algorithm(cfg.algorithm);
+  p.options = cfg.options;
+  validate_options(*p.algo, p.options,
+                   is_platform_file(cfg.machine) || cfg.topology == Topology::Cube);
   if (!preloaded && !cfg.scene_path.empty()) {
     LoadOptions lo;
     lo.width = cfg.width;
     lo.height = cfg.height;
-    loaded = load_scene(cfg.scene_path, lo);
+    p.loaded = load_scene(cfg.scene_path, lo);
   }
-  const Scene& scene = preloaded ? *preloaded : loaded;
-  if (algo.untextured && scene.textured())
-    throw InputError(scene.path, 0,
-                     algo.name + " renders untextured scenes only (Blazek's renderer "
-                                 "had no textures)");
+  p.scene = preloaded ? preloaded : &p.loaded;
+  if (p.algo->untextured && p.scene->textured())
+    throw InputError(p.scene->path, 0,
+                     p.algo->name + " renders untextured scenes only (Blazek's renderer "
+                                    "had no textures)");
+  return p;
+}
 
-  // Platform: a built-in machine is generated on the fly for any P (`zcube platform` writes the
-  // same text), a path is loaded as given.
-  std::string platform_label;
-  const bool is_file = is_platform_file(cfg.machine);
-  std::string builtin_xml;
+// Where the platform comes from: a built-in machine is generated on the fly for any P (`zcube
+// platform` writes the same text), a path is loaded as given.
+struct PlatformSource {
+  bool is_file = false;
+  std::string label, builtin_xml;
   std::vector<std::string> file_settings; // the file's <config>, checked as --cfg is
-  if (is_file) {
-    check_platform_file(cfg.machine); // before this process has an engine: it tries the file
-    file_settings = platform_file_settings(cfg.machine);
-    platform_label = cfg.machine;
-  } else {
-    check_node_count(cfg.topology, cfg.nodes);
-    // --cpu-scale is the host speed clock / k, as `zcube platform --cpu-scale` writes it: a file
-    // written with it runs as the flag does, to the bit (costs are cycles / speed either way).
-    PlatformEdits edits;
-    edits.cpu_scale = cfg.what_ifs.cpu_scale();
-    builtin_xml = platform_xml(machine_spec(cfg.machine), cfg.nodes, cfg.topology, edits);
-    platform_label = "zcube platform --machine " + cfg.machine + " --nodes " +
-                     std::to_string(cfg.nodes) + " --topology " + topology_name(cfg.topology);
-  }
+};
 
+PlatformSource platform_source(const SimConfig& cfg) {
+  PlatformSource src;
+  src.is_file = is_platform_file(cfg.machine);
+  if (src.is_file) {
+    check_platform_file(cfg.machine); // before this process has an engine: it tries the file
+    src.file_settings = platform_file_settings(cfg.machine);
+    src.label = cfg.machine;
+    return src;
+  }
+  check_node_count(cfg.topology, cfg.nodes);
+  // --cpu-scale is the host speed clock / k, as `zcube platform --cpu-scale` writes it: a file
+  // written with it runs as the flag does, to the bit (costs are cycles / speed either way).
+  PlatformEdits edits;
+  edits.cpu_scale = cfg.what_ifs.cpu_scale();
+  src.builtin_xml = platform_xml(machine_spec(cfg.machine), cfg.nodes, cfg.topology, edits);
+  src.label = "zcube platform --machine " + cfg.machine + " --nodes " + std::to_string(cfg.nodes) +
+              " --topology " + topology_name(cfg.topology);
+  return src;
+}
+
+// SimGrid's arguments: zcube's settings, then the platform file's <config>, then the user's --cfg
+// and --log (so they win).
+std::vector<std::string> engine_args(const SimConfig& cfg, const PlatformSource& src) {
   std::vector<std::string> args = {"zcube",
                                    "--log=root.thres:critical",
                                    "--cfg=network/model:CM02",
@@ -138,13 +160,122 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
   // same computation with every number multiplied by k.
   args.push_back("--cfg=surf/precision:" + format_double(1e-12 * cfg.what_ifs.cost_scale()));
   // Under the flow fidelity every message is an actor (Delivery::post): SimGrid's guard page on
-  // its stack cost an mprotect pair that split and merged the heap's mapping, a quarter of the
-  // host CPU of a 128-node run and a third of a 1024-node one. Those runs go without stack guards
-  // (the ranks' stacks are 8 MiB, far more than the renderers use); --cfg=contexts/guard-size:1,
-  // passed after this, puts them back.
+  // its stack split and merged the heap's mapping on every message. Those runs go without stack
+  // guards (the ranks' stacks are 8 MiB, far more than the renderers use);
+  // --cfg=contexts/guard-size:1, passed after this, puts them back.
   if (cfg.fidelity == Fidelity::Flow) args.push_back("--cfg=contexts/guard-size:0");
-  args.insert(args.end(), file_settings.begin(), file_settings.end());
+  args.insert(args.end(), src.file_settings.begin(), src.file_settings.end());
   args.insert(args.end(), cfg.simgrid_args.begin(), cfg.simgrid_args.end());
+  return args;
+}
+
+// The platform loaded into `e`, read back as a model, with the run's what-ifs and its draw of
+// the uncertainty model applied.
+PlatformModel load_machine(sg::Engine& e, const SimConfig& cfg, const PlatformSource& src) {
+  if (src.is_file)
+    load_platform_file(e, cfg.machine);
+  else
+    load_platform_text(e, src.builtin_xml, src.label);
+  PlatformModel pm = read_platform(e, src.label);
+  if (src.is_file && cfg.nodes != pm.nodes && cfg.nodes != 0)
+    throw UsageError("--nodes " + std::to_string(cfg.nodes) + " but " + src.label + " models " +
+                     std::to_string(pm.nodes) + " nodes");
+  WhatIfs what_ifs = cfg.what_ifs;
+  if (!src.is_file) what_ifs.reset("cpu-scale"); // in the built-in machine's host speed already
+  apply_what_ifs(what_ifs, pm, e);
+  if (cfg.draw) apply_model_draw(*cfg.draw, pm);
+  return pm;
+}
+
+// How the ranks ended: the first failure's reason, whether it was a node out of its memory, and
+// which ranks finished.
+struct RankOutcome {
+  std::string failure;
+  bool oom = false;
+  std::vector<char> finished;
+};
+
+// Runs every rank (and the host computer's, when the algorithm has one) to its end or the first
+// failure, which stops the others.
+RankOutcome run_ranks(sg::Engine& e, const Algorithm& algo, const PlatformModel& pm,
+                      const std::vector<sg::Host*>& hosts, Delivery& delivery,
+                      std::vector<std::unique_ptr<SimContext>>& ctxs,
+                      std::vector<NodeStats>& stats) {
+  const int P = pm.nodes;
+  RankOutcome out;
+  out.finished.assign(std::size_t(P + 1), 0);
+  // Once the last rank is done (or one failed), no pending wake-up may move the clock further:
+  // the run ends at the last rank's end, as SimGrid ends it when only the daemon is left.
+  int running = P + (algo.uses_host ? 1 : 0);
+  auto body = [&](int r, const std::function<void(NodeContext&)>& fn) {
+    try {
+      if (r < P && pm.os_resident > 0) ctxs[r]->alloc(pm.os_resident, "node operating system");
+      fn(*ctxs[r]);
+      out.finished[r] = 1;
+      if (--running == 0) delivery.stop();
+    } catch (const OutOfNodeMemory& ex) {
+      if (out.failure.empty()) out.failure = ex.what();
+      out.oom = true;
+      delivery.stop();
+      sg::Actor::kill_all();
+    } catch (const std::exception& ex) {
+      if (out.failure.empty()) out.failure = "node " + std::to_string(r) + ": " + ex.what();
+      delivery.stop();
+      sg::Actor::kill_all();
+    }
+    stats[r].finish_s = sg::Engine::get_clock();
+  };
+  for (int r = 0; r < P; ++r)
+    sg::Actor::create("node" + std::to_string(r), hosts[r], [&, r] { body(r, algo.node); });
+  if (algo.uses_host) sg::Actor::create("srm", hosts[P], [&] { body(P, algo.host); });
+  e.run();
+  return out;
+}
+
+// Why a run that ended at `vtime` has no times to report, beyond its ranks' own failures: a rank
+// still waiting for a message nobody sends, or a clock past what it resolves.
+std::string failure_after_run(const RankOutcome& o, const Algorithm& algo, int P, double vtime,
+                              const SimConfig& cfg) {
+  for (int r = 0; r <= P; ++r)
+    if (!o.finished[r] && (r < P || algo.uses_host))
+      return (r < P ? "node " + std::to_string(r) : std::string("host computer")) +
+             ": deadlock (still waiting for a message when the simulation ended)";
+  // The clock is a double: beyond 2^52 ns (52 days, times --cost-scale) it no longer resolves a
+  // nanosecond, and compute phases (a CPU cycle is 25..63 ns) are rounded or vanish when added
+  // to it. Such a run has no exact times to report.
+  const double clock_limit = kClockResolvedNs * 1e-9 * cfg.what_ifs.cost_scale();
+  if (!(vtime <= clock_limit))
+    return "virtual time " + format_double(vtime) + " s is beyond " + format_double(clock_limit) +
+           " s (2^52 ns), where the simulated clock no longer resolves a nanosecond and compute "
+           "times would be rounded; use faster what-if costs";
+  return "";
+}
+
+// The report's "model": the network figures the run used (what-ifs and draw applied), the node
+// memory, then the host link, the CPU costs and the what-ifs.
+void add_model_section(nlohmann::json& j, const PlatformModel& pm, const WhatIfs& w) {
+  j["model"] = {
+      {"startup_short_s", pm.net.startup_short_s},
+      {"startup_long_s", pm.net.startup_long_s},
+      {"short_max_bytes", pm.net.short_max_bytes},
+      {"per_byte_s", pm.net.per_byte_s},
+      {"per_hop_s", pm.net.per_hop_s},
+      {"switching", pm.net.switching == Switching::Circuit ? "circuit" : "store-and-forward"},
+      {"node_memory_bytes", pm.memory.empty() ? 0.0 : pm.memory[0]},
+      {"os_resident_bytes", pm.os_resident}};
+  if (pm.net.both_ways_Bps > 0) j["model"]["both_ways_Bps"] = pm.net.both_ways_Bps;
+  add_cpu_and_what_ifs(j, pm, w);
+}
+
+} // namespace
+
+SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformModel* model) {
+  const auto wall0 = std::chrono::steady_clock::now();
+  PreparedRun run = prepare_run(cfg, preloaded);
+  const Algorithm& algo = *run.algo;
+  const Scene& scene = *run.scene;
+  const PlatformSource src = platform_source(cfg);
+  std::vector<std::string> args = engine_args(cfg, src);
   std::vector<char*> argv;
   for (auto& a : args)
     argv.push_back(a.data());
@@ -152,21 +283,10 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
   declare_platform_flags();
   sg::Engine e(&argc, argv.data());
   keep_stacks_on_fresh_pages();
-  if (is_file)
-    load_platform_file(e, cfg.machine);
-  else
-    load_platform_text(e, builtin_xml, platform_label);
-  PlatformModel pm = read_platform(e, platform_label);
-  if (is_file && cfg.nodes != pm.nodes && cfg.nodes != 0)
-    throw UsageError("--nodes " + std::to_string(cfg.nodes) + " but " + platform_label +
-                     " models " + std::to_string(pm.nodes) + " nodes");
-  WhatIfs what_ifs = cfg.what_ifs;
-  if (!is_file) what_ifs.reset("cpu-scale"); // in the built-in machine's host speed already
-  apply_what_ifs(what_ifs, pm, e);
-  if (cfg.draw) apply_model_draw(*cfg.draw, pm);
+  const PlatformModel pm = load_machine(e, cfg, src);
   if (model) *model = pm;
   const int P = pm.nodes;
-  if (algo.check_nodes) algo.check_nodes(options, P);
+  if (algo.check_nodes) algo.check_nodes(run.options, P);
 
   std::vector<sg::Host*> hosts;
   for (int r = 0; r < P; ++r)
@@ -175,7 +295,6 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
   SimCost sim_cost;
   SimNetwork net(pm.net, pm.topology, P, cfg.fidelity, hosts, sim_cost);
   Delivery delivery(net, cfg.fidelity, hosts, message_stack_kib(cfg.simgrid_args), sim_cost);
-
   std::vector<NodeStats> stats(P + 1);
   if (cfg.timeline)
     for (auto& s : stats)
@@ -189,86 +308,33 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
         std::make_unique<SimComm>(r, P, pm.topology, delivery, stats[r], pm.net.charge_payloads));
     const CostTable cost = r < P ? pm.cost[r] : pm.cost[0];
     const double mem = r < P ? pm.memory[r] : 0.0; // the host computer is not memory-bound
-    ctxs.push_back(std::make_unique<SimContext>(*comms[r], stats[r], scene, facts, options, cost,
-                                                mem, images, cfg.draw.get()));
+    ctxs.push_back(std::make_unique<SimContext>(*comms[r], stats[r], scene, facts, run.options,
+                                                cost, mem, images, cfg.draw.get()));
   }
-
-  std::string failure;
-  bool oom = false;
-  std::vector<char> finished(P + 1, 0);
-  // Once the last rank is done (or one failed), no pending wake-up may move the clock further:
-  // the run ends at the last rank's end, as SimGrid ends it when only the daemon is left.
-  int running = P + (algo.uses_host ? 1 : 0);
-  auto body = [&](int r, const std::function<void(NodeContext&)>& fn) {
-    try {
-      if (r < P && pm.os_resident > 0) ctxs[r]->alloc(pm.os_resident, "node operating system");
-      fn(*ctxs[r]);
-      finished[r] = 1;
-      if (--running == 0) delivery.stop();
-    } catch (const OutOfNodeMemory& ex) {
-      if (failure.empty()) failure = ex.what();
-      oom = true;
-      delivery.stop();
-      sg::Actor::kill_all();
-    } catch (const std::exception& ex) {
-      if (failure.empty()) failure = "node " + std::to_string(r) + ": " + ex.what();
-      delivery.stop();
-      sg::Actor::kill_all();
-    }
-    stats[r].finish_s = sg::Engine::get_clock();
-  };
-  for (int r = 0; r < P; ++r)
-    sg::Actor::create("node" + std::to_string(r), hosts[r], [&, r] { body(r, algo.node); });
-  if (algo.uses_host) sg::Actor::create("srm", hosts[P], [&] { body(P, algo.host); });
   sim_cost.actors += std::uint64_t(P + (algo.uses_host ? 1 : 0));
-  e.run();
+  const RankOutcome ranks = run_ranks(e, algo, pm, hosts, delivery, ctxs, stats);
   const double vtime = sg::Engine::get_clock();
-  // A rank still blocked when nothing else can happen waits for a message nobody sends.
-  for (int r = 0; r <= P && failure.empty(); ++r)
-    if (!finished[r] && (r < P || algo.uses_host))
-      failure = (r < P ? "node " + std::to_string(r) : std::string("host computer")) +
-                ": deadlock (still waiting for a message when the simulation ended)";
-  // The clock is a double: beyond 2^52 ns (52 days, times --cost-scale) it no longer resolves a
-  // nanosecond, and compute phases (a CPU cycle is 25..63 ns) are rounded or vanish when added to
-  // it (a 1e300 s latency left every compute phase at 0 s). Such a run has no exact times to
-  // report.
-  const double clock_limit = 0x1p52 * 1e-9 * cfg.what_ifs.cost_scale();
-  if (failure.empty() && !(vtime <= clock_limit))
-    failure = "virtual time " + format_double(vtime) + " s is beyond " +
-              format_double(clock_limit) +
-              " s (2^52 ns), where the simulated clock no longer resolves a nanosecond and compute "
-              "times would be rounded; use faster what-if costs";
+  const std::string failure =
+      ranks.failure.empty() ? failure_after_run(ranks, algo, P, vtime, cfg) : ranks.failure;
 
   SimResult res;
   res.ok = failure.empty();
   res.error = failure;
   nlohmann::json& j = res.report;
   add_run_header(j,
-                 {pm.machine, platform_label, topology_name(pm.topology),
-                  fidelity_name(cfg.fidelity), preloaded ? scene.path : cfg.scene_path, P},
+                 {pm.machine, src.label, topology_name(pm.topology), fidelity_name(cfg.fidelity),
+                  preloaded ? scene.path : cfg.scene_path, P},
                  cfg, algo.name, scene);
-  j["status"] = res.ok ? "ok" : (oom ? "out_of_memory" : "error");
+  j["status"] = res.ok ? "ok" : (ranks.oom ? "out_of_memory" : "error");
   if (!res.ok) j["error"] = failure;
   j["virtual_time_s"] = vtime;
-
   std::vector<NodeRecord> records;
   for (int r = 0; r <= P; ++r) {
     if (r == P && !algo.uses_host) break;
     records.push_back(ctxs[r]->record(r == P ? nlohmann::json("srm") : nlohmann::json(r)));
   }
   add_node_sections(j, records, P, vtime);
-  j["model"] = {
-      {"startup_short_s", pm.net.startup_short_s},
-      {"startup_long_s", pm.net.startup_long_s},
-      {"short_max_bytes", pm.net.short_max_bytes},
-      {"per_byte_s", pm.net.per_byte_s},
-      {"per_hop_s", pm.net.per_hop_s},
-      {"switching", pm.net.switching == Switching::Circuit ? "circuit" : "store-and-forward"},
-      {"node_memory_bytes", pm.memory.empty() ? 0.0 : pm.memory[0]},
-      {"os_resident_bytes", pm.os_resident}};
-  if (pm.net.both_ways_Bps > 0) j["model"]["both_ways_Bps"] = pm.net.both_ways_Bps;
-  add_cpu_and_what_ifs(j, pm, cfg.what_ifs);
-
+  add_model_section(j, pm, cfg.what_ifs);
   // What the simulation cost in events: the same in every run of this configuration, on any host.
   j["simulation_cost"] = sim_cost;
   add_image_section(j, images, scene, cfg, res.ok, res.images);
