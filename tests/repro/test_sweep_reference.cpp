@@ -67,6 +67,42 @@ TEST(SweepReference, EachFamilyGetsItsPapersReference) {
   EXPECT_DOUBLE_EQ(rows[5]["speedup"].get<double>(), 1.0);
 }
 
+// One speed-up per point, whichever command computes it: a sweep of AAPC-HBP, 2 POT, 640x640 on
+// 16 nodes with its reference gives the speed-up results/kurc/speedup.csv holds (zcube
+// reproduce), both dividing repro's timed_s.
+TEST(SweepReference, KurcSpeedupIsTheOneZcubeReproduceWrote) {
+  const std::string scene = kRoot + "/scenes/kurc/2pot.json";
+  const std::vector<SweepAxis> axes = {{"machine", {"ipsc2"}},
+                                       {"algorithm", {"aapc-hbp"}},
+                                       {"nodes", {"16"}},
+                                       {"size", {"640x640"}}};
+  auto pts = expand_sweep(axes, scene);
+  add_baselines(axes, pts, scene);
+  ASSERT_EQ(pts.size(), 2u);
+  std::vector<SimConfig> cfgs;
+  for (const auto& p : pts) {
+    ASSERT_TRUE(p.config.has_value()) << p.error;
+    cfgs.push_back(*p.config);
+  }
+  const auto reps = simulate_batch(cfgs, 2);
+  auto rows = sweep_rows(axes, pts, reps);
+  ASSERT_TRUE(add_speedups(pts, reps, rows));
+  ASSERT_TRUE(rows[0]["speedup"].is_number()) << rows[0].dump();
+  const double sweep_speedup = rows[0]["speedup"].get<double>();
+  int found = 0;
+  for (const auto& row : test::read_csv(kRoot + "/results/kurc/speedup.csv"))
+    if (row.at("algorithm") == "aapc-hbp" && row.at("scene") == "2pot" &&
+        row.at("width") == "640" && row.at("height") == "640" && row.at("nodes") == "16") {
+      ++found;
+      ASSERT_EQ(row.at("status"), "ok");
+      // The CSV prints 4 significant digits.
+      EXPECT_NEAR(std::stod(row.at("speedup")), sweep_speedup, 6e-4 * sweep_speedup);
+      EXPECT_NEAR(std::stod(row.at("timed_s")), rows[0]["timed_s"].get<double>(), 1e-5);
+      EXPECT_NEAR(std::stod(row.at("virtual_s")), rows[0]["virtual_s"].get<double>(), 1e-5);
+    }
+  EXPECT_EQ(found, 1);
+}
+
 // node-initiated on a platform file would run on the file's P nodes, not one: the baseline point
 // says so instead of dividing by the wrong run.
 TEST(SweepReference, BlazeksReferenceNeedsOneNodeNotAPlatformFile) {
