@@ -104,8 +104,8 @@ TEST(Reproduce, CommittedResultsAreCurrentForASubset) {
       ++found;
     }
   for (const auto& row : read_csv(kRoot + "/results/kurc/speedup.csv"))
-    if (row.at("algorithm") == "pair-rs" && row.at("scene") == "1pot" &&
-        row.at("width") == "400" && row.at("nodes") == "16") {
+    if (row.at("algorithm") == "pair-rs" && row.at("scene") == "1pot" && row.at("width") == "400" &&
+        row.at("nodes") == "16") {
       near(row.at("virtual_s"), r[0]["virtual_time_s"].get<double>(), 6e-6, 0, "kurc virtual_s");
       near(row.at("timed_s"), timed_s(r[0]), 6e-6, 0, "kurc timed_s");
       EXPECT_LT(timed_s(r[0]), r[0]["virtual_time_s"].get<double>() * 0.999);
