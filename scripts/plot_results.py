@@ -232,7 +232,8 @@ def figure_legend(fig, colors, ideal=True, oom=False, styles=None, extra=(), **k
         style.update((styles or {}).get(l, {}))
         h.append(Line2D([], [], color=c, label=l, **style))
     if ideal:
-        h.append(Line2D([], [], color="k", ls=":", lw=0.8, label="ideal (speed-up = P)"))
+        h.append(Line2D([], [], color="k", ls=":", lw=0.8,
+                        label=ideal if isinstance(ideal, str) else "ideal (speed-up = P)"))
     h += list(extra)
     if oom:
         h.append(Line2D([], [], label=OOM_LABEL + " (series colour)", **dict(OOM_STYLE,
@@ -384,7 +385,8 @@ def blazek(d, sub="blazek"):
         axes[0].set_ylabel(ylabel + " (log scale)")
         fig.suptitle("Blazek's four decompositions on the iPSC/2 model (16 MiB nodes, 512x512), "
                      "P = 1..32")
-        figure_legend(fig, colors, oom=oom, loc="lower center", ncol=min(len(colors) + 2, 10))
+        figure_legend(fig, colors, oom=oom, loc="lower center", ncol=min(len(colors) + 2, 10),
+                      ideal="ideal (speed-up = P)" if ykey == "speedup" else "ideal (efficiency 1)")
         save(fig, os.path.join(d, sub, fname))
 
 
