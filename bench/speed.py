@@ -250,7 +250,9 @@ def main():
         w = csv.DictWriter(f, fieldnames=fields, lineterminator="\n")
         w.writeheader()
         for r in rows:
-            w.writerow({k: (f"{v:.4g}" if isinstance(v, float) else v) for k, v in r.items()})
+            # 4 significant digits without an exponent (3842000, not 3.842e+06: a count of bytes).
+            w.writerow({k: (f"{float(f'{v:.4g}'):f}".rstrip("0").rstrip(".")
+                            if isinstance(v, float) else v) for k, v in r.items()})
     with open(os.path.join(a.out, "README.md"), "w") as f:
         f.write("# Host speed (bench/speed.py)\n\n"
                 f"`bench/speed.py {' '.join(sys.argv[1:])}` on {os.cpu_count()} cores, 1-minute "

@@ -72,7 +72,8 @@ def load_rank_phases(path):
     if os.path.exists(path):
         for r in csv.DictReader(open(path)):
             key = (r["workload"], int(r["nodes"]))
-            out.setdefault(key, {}).setdefault((r["rank"], r["phase"]), []).append(float(r["seconds"]))
+            rank = r["rank"] if r.get("process", "node") == "node" else "srm"  # the host's
+            out.setdefault(key, {}).setdefault((rank, r["phase"]), []).append(float(r["seconds"]))
     return out
 
 

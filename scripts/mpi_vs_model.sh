@@ -120,7 +120,7 @@ predict "$out/cluster" "$out/predicted"
 export OMPI_MCA_mpi_yield_when_idle=1
 echo "workload,nodes,processes,run,phase,seconds" >"$out/measured.csv"
 echo "workload,nodes,processes,run,core_share" >"$out/core_share.csv"
-echo "workload,nodes,processes,run,rank,phase,seconds" >"$out/measured_ranks.csv"
+echo "workload,nodes,processes,run,process,rank,phase,seconds" >"$out/measured_ranks.csv"
 for w in "${workloads[@]}"; do
   IFS='|' read -r name host args <<<"$w"
   for p in "${nodes[@]}"; do
@@ -142,7 +142,11 @@ with open(out + "/measured.csv", "a") as f:
 with open(out + "/measured_ranks.csv", "a") as f:
     for node in j["per_node"]:
         for ph, s in node["phases"].items():
-            print(f"{name},{p},{np},{i},{node['rank']},{ph},{s!r}", file=f)
+            # The host computer (Blazek's srm) is a process without a node rank: the rank column
+            # holds numbers only.
+            host = not isinstance(node["rank"], int)
+            rank = "" if host else node["rank"]
+            print(f"{name},{p},{np},{i},{'host' if host else 'node'},{rank},{ph},{s!r}", file=f)
 with open(out + "/core_share.csv", "a") as f:
     print(f"{name},{p},{np},{i},{j['host']['core_share']!r}", file=f)
 PY

@@ -22,7 +22,8 @@ from collections import defaultdict
 
 from plot_figure import META, one_pass, subplots  # matplotlib's Agg figures, no pyplot
 from matplotlib.lines import Line2D
-from matplotlib.ticker import FixedLocator, FuncFormatter, NullFormatter
+from matplotlib.patches import Rectangle
+from matplotlib.ticker import FixedLocator, FuncFormatter, LogLocator, NullFormatter
 
 FIGURES = None  # what --describe writes (a list when asked: reading the ticks costs a layout)
 FORMAT = "png"
@@ -142,6 +143,15 @@ def save_atomically(path, write):
         raise
 
 
+def log_ticks(axis):
+    """A log y axis ticked at 1, 2 and 5 times a power of ten, printed as short decimals (0.01,
+    0.02, 0.05, ..., 20): never the powers of two of a base-2 scale (0.0078125)."""
+    axis.axes.set_yscale("log")
+    axis.set_major_locator(LogLocator(base=10, subs=(1, 2, 5)))
+    axis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+    axis.set_minor_formatter(NullFormatter())
+
+
 def curves(ax, groups, xkey, ykey, colors, ideal=None, logy=False, styles=None, dodge=0.0):
     """One line per group (colour and style fixed per label across panels). Series that coincide
     stay visible: `dodge` shifts series k by k * dodge octaves along x, and hollow or dashed styles
@@ -164,7 +174,7 @@ def curves(ax, groups, xkey, ykey, colors, ideal=None, logy=False, styles=None, 
         if band:
             ax.fill_between([b[0] * shift for b in band], [b[1] for b in band],
                             [b[2] for b in band], color=colors[label], alpha=0.15, lw=0)
-        xs = [number(r[xkey]) * shift for r in rs if r[ykey] == "oom"]
+        xs = [number(r[xkey]) * shift for r in rs if r.get("status") == "out_of_memory"]
         if xs:
             oom.append((label, xs))
     if ideal:
@@ -174,8 +184,7 @@ def curves(ax, groups, xkey, ykey, colors, ideal=None, logy=False, styles=None, 
     ax.set_xticks(ideal or [])
     ax.set_xticklabels([str(int(x)) for x in ideal or []])
     if logy:
-        ax.set_yscale("log", base=2)
-        ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:g}"))
+        log_ticks(ax.yaxis)
     ax.zc_oom = oom  # drawn by oom_band once every panel has its curves
     ax.grid(alpha=0.3)
     return bool(oom)
@@ -223,7 +232,8 @@ def figure_legend(fig, colors, ideal=True, oom=False, styles=None, extra=(), **k
         style.update((styles or {}).get(l, {}))
         h.append(Line2D([], [], color=c, label=l, **style))
     if ideal:
-        h.append(Line2D([], [], color="k", ls=":", lw=0.8, label="ideal (speed-up = P)"))
+        h.append(Line2D([], [], color="k", ls=":", lw=0.8,
+                        label=ideal if isinstance(ideal, str) else "ideal (speed-up = P)"))
     h += list(extra)
     if oom:
         h.append(Line2D([], [], label=OOM_LABEL + " (series colour)", **dict(OOM_STYLE,
@@ -241,7 +251,7 @@ def kurc(d):
             w = 0.38
             for i, s in enumerate(scenes):
                 sel = [r for r in t2
-                       if r["nodes"] == "16" and r["scene"] == s and r["scheme"] == scheme]
+                       if r["nodes"] == "16" and r["scene"] == s and r["algorithm"] == scheme]
                 pred = {r["phase"]: number(r["predicted_ms"]) or 0 for r in sel}
                 lo = {r["phase"]: number(r.get("predicted_p05_ms")) for r in sel}
                 hi = {r["phase"]: number(r.get("predicted_p95_ms")) for r in sel}
@@ -268,8 +278,8 @@ def kurc(d):
         save(fig, os.path.join(d, "kurc", "table2.png"))
     su = rows(os.path.join(d, "kurc", "speedup.csv"))
     if su:
-        keys = list(dict.fromkeys((r["scene"], r["size"]) for r in su))
-        colors = palette({r["scheme"] for r in su})
+        keys = list(dict.fromkeys((r["scene"], r["width"], r["height"]) for r in su))
+        colors = palette({r["algorithm"] for r in su})
         # The HBP variants lie on their RS twins: dashed, hollow, another marker.
         styles = {s: (dict(ls="--", marker="s", ms=6, mfc="white") if s.endswith("hbp")
                       else dict(marker="o", ms=4)) for s in colors}
@@ -277,14 +287,14 @@ def kurc(d):
                              squeeze=False)
         axes = axes[0]
         oom = False
-        for ax, (scene, size) in zip(axes, keys):
+        for ax, (scene, width, height) in zip(axes, keys):
             g = defaultdict(list)
             for r in su:
-                if r["scene"] == scene and r["size"] == size:
-                    g[r["scheme"]].append(r)
+                if (r["scene"], r["width"], r["height"]) == (scene, width, height):
+                    g[r["algorithm"]].append(r)
             oom |= curves(ax, g, "nodes", "speedup", colors, ideal=[1, 2, 4, 8, 16],
                           styles=styles, dodge=0.04)
-            ax.set_title(f"{scene.replace('pot', ' POT')}, {size}x{size}")
+            ax.set_title(f"{scene.replace('pot', ' POT')}, {width}x{height}")
             ax.set_xlabel("nodes P")
         oom_band(axes, colors)
         axes[0].set_ylabel("speed-up over the scanline z-buffer (1 node)")
@@ -302,15 +312,15 @@ def charles(d):
     for ykey, fname, ylabel in (
             ("speedup", "speedup.png", "speed-up over the sequential renderer (1 node)"),
             ("efficiency", "efficiency.png", "efficiency (speed-up / P)")):
-        fig, ax = subplots(figsize=(7.5, 5.2))
+        # The legend goes to the right of the panel: inside, it covered the curves at 1-4 nodes.
+        fig, ax = subplots(figsize=(10, 5.2))
         g = defaultdict(list)
         for r in su:
             r = dict(r)
             sp = number(r["speedup"])
-            r["efficiency"] = ("oom" if r["speedup"] == "oom" else "") if sp is None \
-                else str(sp / number(r["nodes"]))
+            r["efficiency"] = "" if sp is None else str(sp / number(r["nodes"]))
             topo = "hypercube" if r["topology"] == "cube" else "ring"
-            g[f'{r["scene"]} {r["size"]}x{r["size"]}, {topo}'].append(r)
+            g[f'{r["scene"]} {r["width"]}x{r["height"]}, {topo}'].append(r)
         colors = {}
         styles = {}
         scenes = list(dict.fromkeys(l.split(",")[0] for l in sorted(g, key=natural_key)))
@@ -328,7 +338,7 @@ def charles(d):
             ax.plot([p[0] for p in paper],
                     [p[1] if ykey == "speedup" else p[1] / p[0] for p in paper],
                     "k*", ms=12, label=f'paper (Charles et al.: {r0["scene"]} '
-                                       f'{r0["size"]}x{r0["size"]}, hypercube)')
+                                       f'{r0["width"]}x{r0["height"]}, hypercube)')
         if oom:
             ax.plot([], [], label=OOM_LABEL + " (series colour)",
                     **dict(OOM_STYLE, color="dimgrey"))
@@ -340,7 +350,7 @@ def charles(d):
         handles = [h for h in ax.get_legend_handles_labels()[0]
                    if not h.get_label().startswith("_")]
         ax.legend(handles=sorted(handles, key=lambda h: natural_key(h.get_label())),
-                  fontsize=8.5, loc="upper left")
+                  fontsize=8.5, loc="upper left", bbox_to_anchor=(1.02, 1), borderaxespad=0)
         save(fig, os.path.join(d, "charles", fname))
 
 
@@ -353,7 +363,7 @@ def blazek(d, sub="blazek"):
     su = rows(os.path.join(d, sub, "speedup.csv"))
     if not su:
         return
-    methods = list(dict.fromkeys(r["method"] for r in su))
+    methods = list(dict.fromkeys(r["algorithm"] for r in su))
     colors = palette({spheres(r) for r in su})
     for ykey, fname, ylabel in (
             ("speedup", "speedup.png", "speed-up over node-initiated on 1 node"),
@@ -366,7 +376,7 @@ def blazek(d, sub="blazek"):
         for ax, m in zip(axes, methods):
             g = defaultdict(list)
             for r in su:
-                if r["method"] == m:
+                if r["algorithm"] == m:
                     g[spheres(r)].append(r)
             oom |= curves(ax, g, "nodes", ykey, colors, ideal=[1, 2, 4, 8, 16, 32], logy=True)
             ax.set_title(m)
@@ -375,7 +385,8 @@ def blazek(d, sub="blazek"):
         axes[0].set_ylabel(ylabel + " (log scale)")
         fig.suptitle("Blazek's four decompositions on the iPSC/2 model (16 MiB nodes, 512x512), "
                      "P = 1..32")
-        figure_legend(fig, colors, oom=oom, loc="lower center", ncol=min(len(colors) + 2, 10))
+        figure_legend(fig, colors, oom=oom, loc="lower center", ncol=min(len(colors) + 2, 10),
+                      ideal="ideal (speed-up = P)" if ykey == "speedup" else "ideal (efficiency 1)")
         save(fig, os.path.join(d, sub, fname))
 
 
@@ -542,7 +553,7 @@ def compositing(d, sub="compositing"):
     m = rows(os.path.join(d, sub, "merging.csv"))
     if not m:
         return
-    cube = [r for r in m if r["topology"] == "cube" and r["size"] == "400"
+    cube = [r for r in m if r["topology"] == "cube" and r["width"] == "400"
             and r.get("scene", "2pot") == "2pot"]
     machines = list(dict.fromkeys(r["machine"] for r in cube))
     shown = ("pair-rs", "aapc-hbp", "binary-swap", "direct-send", "best radix-k")
@@ -554,9 +565,9 @@ def compositing(d, sub="compositing"):
         for r in cube:
             if r["machine"] != mach:
                 continue
-            if r["contender"] in shown:
-                g[r["contender"]].append(r)
-            if r["contender"].startswith("radix-") or r["contender"] in ("binary-swap",
+            if r["algorithm"] in shown:
+                g[r["algorithm"]].append(r)
+            if r["algorithm"].startswith("radix-") or r["algorithm"] in ("binary-swap",
                                                                           "direct-send"):
                 b = best.get(r["nodes"])
                 if b is None or number(r["merging_ms"]) < number(b["merging_ms"]):
@@ -577,28 +588,52 @@ def compositing(d, sub="compositing"):
 
 
 def compositing_best_k(b, out):
-    """The fastest radix k against P, one panel per machine (400x400, cube), one line a scene."""
-    cube = [r for r in b if r["topology"] == "cube" and r["size"] == "400" and r["best_k"]]
+    """The fastest radix k at every P and scene, one panel per machine (400x400, cube): a grid of
+    scenes by P, each cell printing its k and coloured by where k lies between binary swap (k = 2)
+    and direct send (k = P). Lines through a categorical k, one a scene, lay on top of each
+    other."""
+    cube = [r for r in b if r["topology"] == "cube" and r["width"] == "400" and r["best_k"]]
     machines = list(dict.fromkeys(r["machine"] for r in cube))
     scenes = sorted({r["scene"] for r in cube}, key=natural_key)
-    colors = palette(set(scenes))
-    fig, axes = subplots(1, len(machines), figsize=(4.4 * len(machines), 4.4), squeeze=False,
-                         sharey=True)
+    ps = sorted({int(r["nodes"]) for r in cube})
+    fig, axes = subplots(1, len(machines), figsize=(0.62 * len(ps) * len(machines) + 2, 3.6),
+                         squeeze=False, sharey=True)
+    cmap = matplotlib_colormap("viridis")
     for ax, mach in zip(axes[0], machines):
-        g = defaultdict(list)
+        grid = [[None] * len(ps) for _ in scenes]
         for r in cube:
             if r["machine"] == mach:
-                g[r["scene"]].append(r)
-        curves(ax, g, "nodes", "best_k", colors, logy=True, dodge=0.04)
-        ps = sorted({number(r["nodes"]) for r in cube})
-        ax.set_xticks(ps)
-        ax.set_xticklabels([str(int(x)) for x in ps])
-        ax.set_title(f"{mach}, 400x400")
+                grid[scenes.index(r["scene"])][ps.index(int(r["nodes"]))] = int(r["best_k"])
+        for i, row in enumerate(grid):
+            for j, k in enumerate(row):
+                if k is None:
+                    continue
+                # 0 at binary swap (k = 2), 1 at direct send (k = P).
+                share = 0.0 if ps[j] <= 2 else math.log2(k / 2) / math.log2(ps[j] / 2)
+                colour = cmap(0.15 + 0.7 * share)
+                ax.add_patch(Rectangle((j - 0.5, i - 0.5), 1, 1, color=colour, lw=0))
+                ax.text(j, i, str(k), ha="center", va="center", fontsize=8,
+                        color="white" if share < 0.6 else "black")
+        ax.set_xlim(-0.5, len(ps) - 0.5)
+        ax.set_ylim(len(scenes) - 0.5, -0.5)
+        ax.set_xticks(range(len(ps)), [str(p) for p in ps])
+        ax.set_yticks(range(len(scenes)), [sc.replace("pot", " POT").replace("_", " #")
+                                           for sc in scenes])
+        ax.set_title(f"{mach}, 400x400", fontsize=10)
         ax.set_xlabel("nodes P")
-    axes[0][0].set_ylabel("fastest radix k (2: binary swap, P: direct send)")
-    fig.suptitle("The best k per machine and scene (Kurç et al.'s scenes)", fontsize=11)
-    figure_legend(fig, colors, ideal=False, loc="lower center", ncol=len(scenes))
+    axes[0][0].set_ylabel("scene")
+    fig.suptitle("The fastest radix k per machine, scene and P (Kurç et al.'s scenes)",
+                 fontsize=11)
+    extra = [Rectangle((0, 0), 1, 1, color=cmap(0.15), label="k = 2: binary swap"),
+             Rectangle((0, 0), 1, 1, color=cmap(0.5), label="k between"),
+             Rectangle((0, 0), 1, 1, color=cmap(0.85), label="k = P: direct send")]
+    fig.legend(handles=extra, fontsize=9, loc="lower center", ncol=3)
     save(fig, out)
+
+
+def matplotlib_colormap(name):
+    from matplotlib import colormaps
+    return colormaps[name]
 
 
 def run_label(run):
@@ -616,7 +651,112 @@ def run_label(run):
     return f"{algo}, {scene}, {machine}{' ring' if ring else ''}, P = {nodes}"
 
 
+# The model figure (report["model"]) a what-if flag replaces, as a function giving the flag's
+# value in base units: the machine's own value, marked on a what-if x axis.
+MACHINE_FIGURES = {"latency": lambda m: m.get("startup_long_s"),
+                   "per-hop": lambda m: m.get("per_hop_s"),
+                   "bandwidth": lambda m: 1 / m["per_byte_s"] if m.get("per_byte_s") else None,
+                   "host-latency": lambda m: m.get("host_startup_s"),
+                   "host-bandwidth": lambda m: (1 / m["host_per_byte_s"]
+                                                if m.get("host_per_byte_s") else None),
+                   "memory": lambda m: m.get("node_memory_bytes")}
+SCALE_FLAGS = ("cpu-scale", "cost-scale")  # the machine's own value is 1
+MARKERS = ("o", "s", "^", "D", "v", "P", "X", "*")
+LINE_STYLES = ("-", "--", "-.", ":")
+
+
+def short_value(flag, value):
+    """A file named by its stem: the scene, a platform file (an absolute path cut the title)."""
+    if flag == "scene" or re.search(r"\.(json|obj|xml)$", value or ""):
+        return os.path.splitext(os.path.basename(value))[0]
+    return value
+
+
+def sweep_x(rows_, x):
+    """x -> value in base units for every row, from the CSV's numeric twin column (x_s, x_Bps,
+    ...) when there is one, else parsed with zcube's units; None when x is not numeric."""
+    twin = next((c for c in rows_[0] if c.startswith(x.replace("-", "_") + "_") and
+                 all(number(r[c]) is not None for r in rows_ if r[x])), None) if rows_ else None
+    value = (lambda r: number(r[twin])) if twin else (lambda r: quantity(r[x]))
+    return value if all(value(r) is not None for r in rows_) else None
+
+
+def machine_value(doc, x):
+    """The machine's own value of the what-if flag x: 1 for a scale, else the model's figure in a
+    report where x is not in force; None when no report shows it."""
+    if x in SCALE_FLAGS:
+        return 1.0
+    figure = MACHINE_FIGURES.get(x)
+    if figure is None:
+        return None
+    key = x.replace("-", "_")
+    for r in doc.get("reports", []):
+        if r.get("status") == "ok" and "model" in r and not any(
+                k.startswith(key) for k in (r.get("what_if") or {})):
+            return figure(r["model"])
+    return None
+
+
+def sweep_title(y, x, rs, axes, varying, doc):
+    """'y against x (the settings every point shares)', files by their stem."""
+    reps = [r for r in doc.get("reports", []) if r.get("machine")]
+    machines = sorted({short_value("machine", r["machine"]) for r in reps})
+    nodes = sorted({r["nodes"] for r in reps if isinstance(r.get("nodes"), int)})
+    fixed = [f"{c}={short_value(c, rs[0][c])}" for c in axes if c not in varying and c != x]
+    if len(machines) == 1 and "machine" not in axes:
+        fixed.insert(0, f"machine={machines[0]}")
+    if len(nodes) == 1 and "nodes" not in axes:
+        fixed.append(f"P={nodes[0]}")
+    if len(nodes) > 1 and x != "nodes" and "nodes" not in axes:
+        fixed.append(f"P={nodes[0]}..{nodes[-1]}")
+    return f"{y} against {x}" + (" (" + ", ".join(fixed) + ")" if fixed else "")
+
+
+def sweep_series(ax, grp, k, label, colour, x, y, xval):
+    """One line of the sweep (marker and style by k, hollow every other one, so that a line lying
+    on another stays visible), its band (y_p05 .. y_p95) where the CSV has one, and its
+    out-of-memory points as crosses on the panel's bottom edge. Consecutive lines differ in dash
+    and marker, a small hollow one over a large filled one, so that one lying on the other shows
+    both."""
+    style = dict(marker=MARKERS[k % len(MARKERS)], ms=4.5 if k % 2 else 7, ls=LINE_STYLES[k % 4],
+                 lw=1.2, mfc="white" if k % 2 else colour)
+    # Series that coincide stay visible on a node axis: series k sits k * 2 % of an octave over.
+    shift = 2 ** (0.03 * k) if x == "nodes" and xval else 1.0
+    pos = (lambda r: xval(r) * shift) if xval else (lambda r: r[x])
+    ok = [r for r in grp if r["status"] == "ok" and number(r[y]) is not None]
+    pts = sorted((pos(r), number(r[y])) for r in ok) if xval else [(pos(r), number(r[y]))
+                                                                     for r in ok]
+    ax.plot([p[0] for p in pts], [p[1] for p in pts], color=colour, label=label, **style)
+    band = [(pos(r), number(r.get(y + "_p05")), number(r.get(y + "_p95"))) for r in ok
+            if number(r.get(y + "_p05")) is not None and number(r.get(y + "_p95")) is not None]
+    if band and xval:
+        band.sort()
+        ax.fill_between([b[0] for b in band], [b[1] for b in band], [b[2] for b in band],
+                        color=colour, alpha=0.15, lw=0)
+    oom = [pos(r) for r in grp if r["status"] == "out_of_memory"]
+    if oom:
+        ax.plot(oom, [0] * len(oom), transform=ax.get_xaxis_transform(), clip_on=False,
+                label="_oom", **dict(OOM_STYLE, color=colour))
+    return style, bool(oom), bool(band)
+
+
+def sweep_axes_scale(ax, x, xval, rs):
+    """A log axis (base 2 for nodes) ticked at the swept values, as the flag gave them (27.5us,
+    0.25), when every value is positive."""
+    if not xval or min(xval(r) for r in rs) <= 0:
+        return
+    ax.set_xscale("log", base=2 if x == "nodes" else 10)
+    ticks = {}
+    for r in rs:
+        ticks.setdefault(xval(r), r[x])
+    ax.xaxis.set_major_locator(FixedLocator(sorted(ticks)))
+    ax.xaxis.set_major_formatter(FuncFormatter(lambda v, _: ticks.get(v, "")))
+    ax.xaxis.set_minor_formatter(NullFormatter())
+
+
 def sweep(path, x, y, out):
+    """y against the swept flag x: one panel per value of the first other flag that varies, one
+    line per combination of the rest."""
     all_rows = rows(path)
     with open(os.path.join(os.path.dirname(path) or ".", "sweep.json")) as f:
         doc = json.load(f)
@@ -629,53 +769,77 @@ def sweep(path, x, y, out):
     refs = ("sequential", "scanline")
     if "algorithm" in all_rows[0] and any(r["algorithm"] not in refs for r in rs):
         rs = [r for r in rs if r["algorithm"] not in refs]
+    if not any(r["status"] == "ok" and number(r[y]) is not None for r in rs):
+        sys.exit(f"plot_results.py: no point of {path} has a value of {y}; no plot written")
     varying = [c for c in axes if c != x and len({r[c] for r in rs}) > 1]
-    g = defaultdict(list)
-    for r in rs:
-        g[", ".join(f"{c}={r[c]}" for c in varying) or y].append(r)
-    fig, ax = subplots(figsize=(7.5, 4.8))
-    xs_numeric = all(quantity(r[x]) is not None for r in rs)
-    oom_x = []
-    for i, (label, grp) in enumerate(sorted(g.items(), key=lambda kv: natural_key(kv[0]))):
-        ok = [r for r in grp if number(r[y]) is not None]
-        if xs_numeric:
-            pts = sorted((quantity(r[x]), number(r[y])) for r in ok)
-            oom_x += [quantity(r[x]) for r in grp if r["status"] == "out_of_memory"]
-        else:
-            pts = [(r[x], number(r[y])) for r in ok]
-            oom_x += [r[x] for r in grp if r["status"] == "out_of_memory"]
-        ax.plot([p[0] for p in pts], [p[1] for p in pts], marker="o", ms=3, label=label,
-                color="C%d" % (i % 10), ls=("-", "--", ":")[i // 10 % 3])
-    if oom_x:
-        ax.plot(oom_x, [0.02] * len(oom_x), transform=ax.get_xaxis_transform(), label=OOM_LABEL,
-                **OOM_STYLE)
-    if xs_numeric and rs and min(quantity(r[x]) for r in rs) > 0:
-        ax.set_xscale("log", base=2 if x == "nodes" else 10)
-        if x == "nodes":
-            ticks = sorted({quantity(r[x]) for r in rs})
-            ax.set_xticks(ticks, [str(int(t)) for t in ticks])
-    ax.set_xlabel(FLAG_LABELS.get(x, x))
+    panel_flag, line_flags = (varying[0], varying[1:]) if len(varying) > 1 else (None, varying)
+    panels = sorted({r[panel_flag] for r in rs}, key=lambda v: natural_key(f"{panel_flag}={v}")) \
+        if panel_flag else [None]
+    label = lambda r: ", ".join(f"{c}={short_value(c, r[c])}" for c in line_flags) or y
+    labels = sorted({label(r) for r in rs}, key=natural_key)
+    colours = {l: "C%d" % (i % 10) for i, l in enumerate(labels)}
+    xval = sweep_x(rs, x)
+    cols = min(len(panels), 3)
+    nrows = -(-len(panels) // cols)
+    fig, grid = subplots(nrows, cols, figsize=(max(7.5, 4.4 * cols), 3.9 * nrows + 1),
+                         sharey=True, squeeze=False)
+    styles, any_oom, any_band = {}, False, False
+    for ax, value in zip([a for row in grid for a in row], panels):
+        for l in labels:
+            grp = [r for r in rs if label(r) == l and (panel_flag is None or r[panel_flag] == value)]
+            if grp:
+                styles[l], oom, band = sweep_series(ax, grp, labels.index(l), l, colours[l], x, y,
+                                                    xval)
+                any_oom, any_band = any_oom or oom, any_band or band
+        extra = sweep_references(ax, x, y, xval, rs, doc)
+        sweep_axes_scale(ax, x, xval, rs)
+        ax.set_xlabel(FLAG_LABELS.get(x, x))
+        ax.grid(alpha=0.3)
+        if value is not None:
+            ax.set_title(f"{panel_flag}={short_value(panel_flag, value)}", fontsize=9.5)
+    for ax in [a for row in grid for a in row][len(panels):]:
+        ax.set_visible(False)
     ylabel = COLUMN_LABELS.get(y)
     if ylabel is None and y.startswith("phase:"):
         ylabel = f"phase {y[6:]}: longest node (s)"
-    ax.set_ylabel(ylabel or y)
-    # The settings every point shares: the machine and the node count when they are fixed.
-    reps = [r for r in doc.get("reports", []) if r.get("machine")]
-    machines = sorted({r["machine"] for r in reps})
-    nodes = sorted({r["nodes"] for r in reps if isinstance(r.get("nodes"), int)})
-    fixed = [f"{c}={rs[0][c]}" for c in axes if c not in varying and c != x and rs]
-    if len(machines) == 1 and "machine" not in axes:
-        fixed.insert(0, f"machine={machines[0]}")
-    if len(nodes) == 1 and "nodes" not in axes:
-        fixed.append(f"P={nodes[0]}")
-    if len(nodes) > 1 and x != "nodes":
-        fixed.append(f"P={nodes[0]}..{nodes[-1]}")
-    ax.set_title(f"{y} against {x}" + (" (" + ", ".join(fixed) + ")" if fixed else ""),
-                 fontsize=9)
-    ax.grid(alpha=0.3)
-    if len(g) > 1 or oom_x:
-        ax.legend(fontsize=6)
+    for row in grid:
+        row[0].set_ylabel(ylabel or y)
+    title = sweep_title(y, x, rs, axes, varying, doc)
+    if panel_flag:
+        fig.suptitle(title, fontsize=10)
+    else:
+        grid[0][0].set_title(title, fontsize=9)
+    handles = [Line2D([], [], color=colours[l], label=l, **styles[l]) for l in labels if l in styles]
+    if len(handles) == 1 and handles[0].get_label() == y:
+        handles = []
+    handles += extra
+    if any_band:
+        handles.append(Rectangle((0, 0), 1, 1, color="grey", alpha=0.3, label="90 % band"))
+    if any_oom:
+        handles.append(Line2D([], [], label=OOM_LABEL + " (on the axis, series colour)",
+                              **dict(OOM_STYLE, color="dimgrey")))
+    if handles:
+        fig.legend(handles=handles, fontsize=8, loc="lower center",
+                   ncol=min(len(handles), 3 if len(handles) > 4 else 4))
     save(fig, out)
+
+
+def sweep_references(ax, x, y, xval, rs, doc):
+    """The ideal speed-up (P) or efficiency (1) against the node count, and the machine's own value
+    on a what-if axis; their legend handles."""
+    handles = []
+    if x == "nodes" and xval and y in ("speedup", "efficiency"):
+        ps = sorted({xval(r) for r in rs})
+        ax.plot(ps, ps if y == "speedup" else [1] * len(ps), "k:", lw=0.9, label="_ideal")
+        handles.append(Line2D([], [], color="k", ls=":", lw=0.9,
+                              label="ideal (speed-up = P)" if y == "speedup" else
+                              "ideal (efficiency 1)"))
+    own = machine_value(doc, x) if xval else None
+    if own is not None and own > 0:
+        ax.axvline(own, color="0.35", ls="--", lw=0.9, label="_machine")
+        handles.append(Line2D([], [], color="0.35", ls="--", lw=0.9,
+                              label="the machine's own value"))
+    return handles
 
 
 class Pool:

@@ -214,7 +214,7 @@ static int cmd_run(std::vector<std::string> args) {
     seq.options = AlgorithmOptions{};
     seq.compare_with_sequential = false;
     const auto sr = run_simulation_isolated(seq);
-    if (sr.value("status", "") == "ok") seq_s = virtual_s(sr);
+    if (sr.value("status", "") == "ok") seq_s = timed_s(sr);
   }
   SimResult r =
       bands.draws > 0 || bands.sensitivity ? run_with_bands(cfg, bands) : run_simulation(cfg);

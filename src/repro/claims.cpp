@@ -26,8 +26,8 @@ double nominal_phase(const nlohmann::json& r, const std::string& name) {
 double ClaimDraw::time(const std::string& key) const {
   const auto& r = reps_.at(key);
   if (!ok(r)) return std::nan("");
-  if (draw_ < 0) return virtual_s(r);
-  const auto v = band_virtual_s(r);
+  if (draw_ < 0) return timed_s(r);
+  const auto v = band_timed_s(r);
   return std::size_t(draw_) < v.size() ? v[std::size_t(draw_)] : std::nan("");
 }
 

@@ -107,7 +107,7 @@ nlohmann::json paper_figures_for(const nlohmann::json& r, std::optional<double> 
                         {"quantity", "speedup"},
                         {"paper", f->speedup}};
     if (seq_s) {
-      const double s = *seq_s / virtual_s(r); // the paper's timed region (docs/papers.md)
+      const double s = *seq_s / timed_s(r); // the paper's timed region (docs/papers.md)
       e["predicted"] = s;
       e["rel_error"] = rel_error(s, f->speedup);
     }

@@ -84,14 +84,22 @@ int reproduce(const ReproduceOptions& o);
 // Helpers shared by the plans.
 SimConfig repro_config(const std::string& machine, int nodes, const std::string& algorithm,
                        const std::string& scene, int size);
-double virtual_s(const nlohmann::json& report);
+// The one time every paper's speed-up divides, on both sides (docs/papers.md), in `zcube
+// reproduce` and in `zcube sweep` alike: the report's timed_s, the paper's timed region when the
+// algorithm marks one (elastic's per-picture loop; Kurc et al.'s three Table 2 columns, the
+// longest time one node spent in them), else the whole run (Blazek's methods).
+double timed_s(const nlohmann::json& report);
+// The whole run (the report's virtual_time_s): the `virtual_s` column of every CSV.
+double whole_run_s(const nlohmann::json& report);
+// A failed point's status as the tables' `status` column states it ("out_of_memory", "error").
+std::string status_of(const nlohmann::json& report);
 // The draws of the uncertainty model every point of the papers' tables is priced under
 // (docs/uncertainty.md): the same draws for every point, so that a speed-up's band pairs them.
 inline constexpr int kReproduceDraws = 100;
 void with_bands(PaperPlan& plan);
-// The draws' values of virtual_s (the timed region, else the whole run), of a phase's critical
+// The draws' values of timed_s (the timed region, else the whole run), of a phase's critical
 // node, or of the sum of some phases, one a draw, NaN where a draw failed; empty without bands.
-std::vector<double> band_virtual_s(const nlohmann::json& report);
+std::vector<double> band_timed_s(const nlohmann::json& report);
 std::vector<double> band_phases_s(const nlohmann::json& report,
                                   const std::vector<std::string>& phases);
 // The 5th and 95th percentiles of num[d] / den[d] over the draws both have (NaN, NaN if none).

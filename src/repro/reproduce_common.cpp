@@ -26,9 +26,17 @@ bool out_of_memory(const nlohmann::json& r) {
   return r.value("status", "") == "out_of_memory";
 }
 
-double virtual_s(const nlohmann::json& r) {
-  // The paper's timed region when the algorithm marks one (docs/papers.md), else the whole run.
+double timed_s(const nlohmann::json& r) {
   return r.contains("timed_s") ? r["timed_s"].get<double>() : r.value("virtual_time_s", 0.0);
+}
+
+double whole_run_s(const nlohmann::json& r) {
+  return r.value("virtual_time_s", 0.0);
+}
+
+std::string status_of(const nlohmann::json& r) {
+  const std::string s = r.value("status", "");
+  return s.empty() ? "error" : s;
 }
 
 void with_bands(PaperPlan& plan) {
@@ -45,7 +53,7 @@ std::vector<double> draw_values(const nlohmann::json& v) {
 }
 } // namespace
 
-std::vector<double> band_virtual_s(const nlohmann::json& r) {
+std::vector<double> band_timed_s(const nlohmann::json& r) {
   if (!r.contains("bands") || !r["bands"].contains("values")) return {};
   const auto& v = r["bands"]["values"];
   return draw_values(r.contains("timed_s") && v.contains("timed_s") ? v["timed_s"]

@@ -40,7 +40,8 @@ const char* kStudyText =
 const char* kFilesText =
     "\n`best.csv`: the best contender and the best k of every machine, size, scene and node "
     "count, with the start-up, byte and rest ms of the best k and why (against binary swap). "
-    "`merging.csv`: every contender at every point.\n\nPlots: `merging.png` (time against P per "
+    "`merging.csv`: every contender (`algorithm`) at every point.\n\nPlots: `merging.png` (time "
+    "against P per "
     "machine, 2 POT, 400x400), `best_k.png` (the best k against P per machine, one line a "
     "scene, 400x400).\n";
 
@@ -139,11 +140,12 @@ Picked pick(const std::vector<Row>& rows, int P) {
 }
 
 struct Written {
-  Table merging{{"machine", "topology", "size", "scene", "nodes", "contender", "merging_ms",
-                 "messages", "charged_bytes", "max_messages", "max_bytes_sent", "network_ms"},
+  Table merging{{"machine", "topology", "width", "height", "scene", "nodes", "algorithm",
+                 "merging_ms", "messages", "charged_bytes", "max_messages", "max_bytes_sent",
+                 "network_ms"},
                 {}};
-  Table best{{"machine", "topology", "size", "scene", "nodes", "best", "best_ms", "best_k",
-              "best_k_ms", "startup_ms", "bytes_ms", "rest_ms", "why"},
+  Table best{{"machine", "topology", "width", "height", "scene", "nodes", "best", "best_ms",
+              "best_k", "best_k_ms", "startup_ms", "bytes_ms", "rest_ms", "why"},
              {}};
   // Every contender in 2 POT (the quick grid's scene).
   Table md{{"machine", "size", "P", "PAIR-RS", "AAPC-HBP", "binary swap / folding", "direct send",
@@ -177,7 +179,7 @@ void add_point(Written& w, const Point& pt, const nlohmann::json& r) {
   for (const auto& x : rows)
     if (const int k = radix_of(x.contender, pt.nodes)) w.k_ms[pt.where()][pt.scene][k] = x.ms;
   for (const auto& x : rows)
-    w.merging.add({pt.machine, topo, size, pt.scene, P, x.contender, fixed(x.ms, 3),
+    w.merging.add({pt.machine, topo, size, size, pt.scene, P, x.contender, fixed(x.ms, 3),
                    num(x.messages), num(x.bytes), num(x.max_messages), num(x.max_bytes),
                    fixed(x.network_ms, 3)});
   Picked c = pick(rows, pt.nodes);
@@ -185,7 +187,7 @@ void add_point(Written& w, const Point& pt, const nlohmann::json& r) {
   const Row* bk = c.best_k;
   const int k = bk ? radix_of(bk->contender, pt.nodes) : 0;
   const auto ms = [&](const Row* x, double v) { return x ? fixed(v, 3) : ""; };
-  w.best.add({pt.machine, topo, size, pt.scene, P, c.best->contender, fixed(c.best->ms, 3),
+  w.best.add({pt.machine, topo, size, size, pt.scene, P, c.best->contender, fixed(c.best->ms, 3),
               k ? std::to_string(k) : "", ms(bk, bk ? bk->ms : 0), ms(bk, bk ? bk->startup_ms : 0),
               ms(bk, bk ? bk->bytes_ms : 0), ms(bk, bk ? bk->rest_ms() : 0),
               bk ? why(*bk, c.swap, r["model"]) : ""});

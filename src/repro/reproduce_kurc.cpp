@@ -38,15 +38,6 @@ std::string band_num(double v) {
   return std::isfinite(v) ? num(v, 4) : "";
 }
 
-// The paper's rendering time: the three phases of Table 2 (the round-robin distribution of the
-// triangles before them and the picture's output after them are not part of it).
-double render_s(const nlohmann::json& r) {
-  double ms = 0;
-  for (const auto& p : kurc_phases())
-    ms += phase_ms(r, p);
-  return ms * 1e-3;
-}
-
 std::string t2_key(int n, const std::string& scene, const std::string& scheme) {
   return "t2/" + std::to_string(n) + "/" + scene + "/" + scheme;
 }
@@ -72,7 +63,7 @@ const KurcPhaseFigure* paper_figure(const std::string& scene, const std::string&
 
 std::string write_kurc(const Reports& reps, const std::string& dir) {
   // table2.csv and its README table.
-  Table t2{{"nodes", "scene", "scheme", "phase", "predicted_ms", "predicted_p05_ms",
+  Table t2{{"nodes", "scene", "algorithm", "phase", "status", "predicted_ms", "predicted_p05_ms",
             "predicted_p95_ms", "paper_ms"},
            {}};
   Table md{
@@ -85,9 +76,9 @@ std::string write_kurc(const Reports& reps, const std::string& dir) {
         const auto& r = reps.at(t2_key(n, s, sch));
         for (const auto& ph : kurc_phases()) {
           const KurcPhaseFigure* f = n == 16 ? paper_figure(s, sch, ph) : nullptr;
-          const bool oom = out_of_memory(r);
-          t2.add({std::to_string(n), s, sch, ph, oom ? "oom" : fixed(phase_ms(r, ph), 1),
-                  oom ? "" : phase_band_ms(r, ph, "p05"), oom ? "" : phase_band_ms(r, ph, "p95"),
+          const bool run = ok(r);
+          t2.add({std::to_string(n), s, sch, ph, status_of(r), run ? fixed(phase_ms(r, ph), 1) : "",
+                  run ? phase_band_ms(r, ph, "p05") : "", run ? phase_band_ms(r, ph, "p95") : "",
                   f ? num(f->ms) : ""});
         }
       }
@@ -105,13 +96,13 @@ std::string write_kurc(const Reports& reps, const std::string& dir) {
       }
   t2.write_csv(dir + "/table2.csv");
 
-  // speedup.csv and measures.csv.
-  // render_s, not virtual_s: the three phases only (virtual_s is the whole run everywhere else).
-  Table su{
-      {"scheme", "scene", "size", "nodes", "render_s", "speedup", "speedup_p05", "speedup_p95"},
-      {}};
-  Table me{{"scheme", "scene", "size", "nodes", "concurrent_volume_bytes", "load_imbalance", "tpg",
-            "tpf"},
+  // speedup.csv and measures.csv: timed_s (the three phases, on the critical node) is the time
+  // the speed-up divides, as in zcube sweep; virtual_s is the whole run.
+  Table su{{"algorithm", "scene", "width", "height", "nodes", "status", "virtual_s", "timed_s",
+            "speedup", "speedup_p05", "speedup_p95"},
+           {}};
+  Table me{{"algorithm", "scene", "width", "height", "nodes", "status", "concurrent_volume_bytes",
+            "load_imbalance", "tpg", "tpf"},
            {}};
   Table su_md{{"scene", "size", "scheme", "P=2", "P=4", "P=8", "P=16"}, {}};
   for (const auto& sch : kKurcSchemes)
@@ -119,21 +110,23 @@ std::string write_kurc(const Reports& reps, const std::string& dir) {
       for (int size : kSizes) {
         const auto& base = reps.at(seq_key(s, size));
         std::vector<std::string> mdrow = {s, std::to_string(size), sch};
+        const std::string w = std::to_string(size);
         for (int n : kKurcNodes) {
           const auto& r = reps.at(su_key(sch, s, size, n));
           if (!ok(r) || !ok(base)) {
-            su.add({sch, s, std::to_string(size), std::to_string(n), "oom", "oom", "", ""});
-            if (n > 1) mdrow.push_back("oom");
+            const std::string st = status_of(ok(r) ? base : r);
+            su.add({sch, s, w, w, std::to_string(n), st, "", "", "", "", ""});
+            me.add({sch, s, w, w, std::to_string(n), st, "", "", "", ""});
+            if (n > 1) mdrow.push_back(st == "out_of_memory" ? "oom" : st);
             continue;
           }
-          const double t = render_s(r), sp = render_s(base) / t;
-          const auto [lo, hi] =
-              ratio_band(band_phases_s(base, kurc_phases()), band_phases_s(r, kurc_phases()));
-          su.add({sch, s, std::to_string(size), std::to_string(n), num(t), num(sp, 4), band_num(lo),
-                  band_num(hi)});
+          const double t = timed_s(r), sp = timed_s(base) / t;
+          const auto [lo, hi] = ratio_band(band_timed_s(base), band_timed_s(r));
+          su.add({sch, s, w, w, std::to_string(n), "ok", num(whole_run_s(r)), num(t), num(sp, 4),
+                  band_num(lo), band_num(hi)});
           if (n > 1) mdrow.push_back(fixed(sp, 2));
           const auto& k = r.value("kurc", nlohmann::json::object());
-          me.add({sch, s, std::to_string(size), std::to_string(n),
+          me.add({sch, s, w, w, std::to_string(n), "ok",
                   num(r["communication"].value("concurrent_volume_bytes", 0.0)),
                   num(r.value("load_imbalance", 0.0), 4), num(k.value("tpg", 0.0)),
                   num(k.value("tpf", 0.0))});
@@ -163,14 +156,16 @@ std::string write_kurc(const Reports& reps, const std::string& dir) {
       "error over the 36 printed figures: " +
           percent(rms).substr(1) + ".\n\n" + md.markdown() +
           "\n## Speed-ups (speedup.csv)\n\n"
-          "Speed-up = T(`scanline`, 1 node) / T(scheme, P), T the sum of the three phases above "
-          "on both sides (`render_s`; `virtual_s` is the whole run in every other file, or the "
-          "paper's timed region where one is marked): neither counts the distribution of the "
-          "triangles nor the output of the picture. The baseline `scanline` is the paper's "
+          "Speed-up = T(`scanline`, 1 node) / T(scheme, P), T the paper's timed region on both "
+          "sides: the three phases above, the longest time one node spent in them (`timed_s`, "
+          "the same T as `zcube sweep`'s speed-ups; `virtual_s` is the whole run): neither "
+          "counts the distribution of the triangles nor the output of the picture. The baseline "
+          "`scanline` is the paper's "
           "sequential rendering of §1-§2 "
           "with every polygon on one 4 MB node: span lists and the modified scanline z-buffer, "
-          "no merging and no frame buffer (docs/papers.md). `oom`: a node (or the baseline) "
-          "runs out of its 4 MB, operating system included (docs/memory.md), as the paper's "
+          "no merging and no frame buffer (docs/papers.md). `oom` (`status` "
+          "`out_of_memory` in the CSV): a node (or the baseline) runs out of its 4 MB, operating "
+          "system included (docs/memory.md), as the paper's "
           "`*` entries. The paper's own speed-up figure is held out.\n\n" +
           su_md.markdown() +
           "\n`measures.csv`: concurrent communication volume (the sum over steps of the largest "

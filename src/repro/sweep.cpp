@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 
 #include "algo/algorithm.hpp"
 #include "repro/provenance.hpp"
@@ -131,7 +132,7 @@ nlohmann::json sweep_rows(const std::vector<SweepAxis>& axes, const std::vector<
     row["virtual_s"] = ran ? nlohmann::json(r["virtual_time_s"]) : nlohmann::json(nullptr);
     // The paper's timed region (elastic's per-picture loop, Kurc's Table 2 columns), else the
     // whole run (Blazek): what speed-ups divide (docs/papers.md).
-    row["timed_s"] = ran ? nlohmann::json(virtual_s(r)) : nlohmann::json(nullptr);
+    row["timed_s"] = ran ? nlohmann::json(timed_s(r)) : nlohmann::json(nullptr);
     row["wall_s"] = r.contains("host") ? r["host"]["wall_time_s"] : nlohmann::json(nullptr);
     const auto comm = r.value("communication", nlohmann::json::object());
     row["messages"] = ran ? comm.value("messages", nlohmann::json(nullptr)) : nullptr;
@@ -264,20 +265,28 @@ bool add_speedups(const std::vector<SweepPoint>& points, const std::vector<nlohm
   for (const auto& p : points)
     any = any || is_baseline(p);
   if (!any) return false;
+  // The time each paper's speed-up divides, as zcube reproduce takes it (timed_s in
+  // repro/reproduce.hpp); none for a point that did not run to the end.
+  const auto paper_time = [&](std::size_t i) {
+    return i < reports.size() && ok(reports[i]) ? std::optional<double>(timed_s(reports[i]))
+                                                : std::nullopt;
+  };
   for (std::size_t i = 0; i < points.size(); ++i) {
     nlohmann::json& row = rows[i];
     row["speedup"] = nullptr;
     row["efficiency"] = nullptr;
-    if (!row["timed_s"].is_number()) continue;
-    for (std::size_t b = 0; b < points.size(); ++b)
-      if (is_baseline(points[b]) && baseline_key(points[b]) == baseline_key(points[i]) &&
-          rows[b]["timed_s"].is_number()) {
-        const double sp = rows[b]["timed_s"].get<double>() / row["timed_s"].get<double>();
-        const int nodes = is_baseline(points[i]) ? 1 : reports[i].value("nodes", 1);
-        row["speedup"] = sp;
-        row["efficiency"] = sp / std::max(1, nodes);
-        break;
-      }
+    const auto t = paper_time(i);
+    if (!t) continue;
+    for (std::size_t b = 0; b < points.size(); ++b) {
+      if (!is_baseline(points[b]) || baseline_key(points[b]) != baseline_key(points[i])) continue;
+      const auto base = paper_time(b);
+      if (!base) continue;
+      const double sp = *base / *t;
+      const int nodes = is_baseline(points[i]) ? 1 : reports[i].value("nodes", 1);
+      row["speedup"] = sp;
+      row["efficiency"] = sp / std::max(1, nodes);
+      break;
+    }
   }
   return true;
 }

@@ -2,6 +2,7 @@
 
 #include "util/output_file.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -93,7 +94,12 @@ void Table::write_csv(const std::string& path) const {
 
 std::string num(double v, int digits) {
   std::ostringstream s;
-  s << std::setprecision(digits) << v;
+  // A count or a byte size is an integer: 112853000, never 1.12853e+08 (which reads as a rounded
+  // float). 2^53 is where a double stops holding every integer.
+  if (std::isfinite(v) && v == std::floor(v) && std::fabs(v) < 9007199254740992.0)
+    s << std::fixed << std::setprecision(0) << v;
+  else
+    s << std::setprecision(digits) << v;
   return s.str();
 }
 

@@ -38,9 +38,9 @@ check(set(figs) >= {"kurc/speedup.svg", "kurc/table2.svg", "charles/speedup.svg"
                     "fidelity.svg", "calibration/calibration.svg"},
       "every figure drawn as SVG: %s" % sorted(figs))
 k = figs["kurc/speedup.svg"]
-schemes = {r["scheme"] for r in rows("kurc/speedup.csv")}
+schemes = {r["algorithm"] for r in rows("kurc/speedup.csv")}
 check(schemes <= set(k["legend"]), "kurc speed-up legend has every scheme %s: %s" % (sorted(schemes), k["legend"]))
-ooms = sum(1 for r in rows("kurc/speedup.csv") if r["speedup"] == "oom")
+ooms = sum(1 for r in rows("kurc/speedup.csv") if r["status"] == "out_of_memory")
 check(any(l.startswith("out of memory") for l in k["legend"])
       and sum(a["oom_points"] for a in k["axes"]) == ooms,
       "kurc out-of-memory points marked: %d of %d" % (sum(a["oom_points"] for a in k["axes"]), ooms))
@@ -74,6 +74,11 @@ check(len(cal["axes"]) == 2 and cal["axes"][1]["points"] >= len(rows("calibratio
       "calibration: fit and cross-validation panels, every held-out target drawn")
 c = figs["charles/speedup.svg"]
 check("iPSC/860" in c["axes"][0]["title"] and "P =" in c["axes"][0]["title"], "charles title")
+e = figs["blazek/efficiency.svg"]
+ticks = [t for a in e["axes"] for t in a["yticklabels"] if t]
+significant = lambda t: len(t.replace(".", "").strip("0"))  # 0.0078125: 5, 0.05: 1
+check(ticks and all(significant(t) <= 2 for t in ticks),
+      "blazek efficiency: y ticks of one or two digits %s" % ticks)
 for name, fig in figs.items():
     for a in fig["axes"]:
         check(a["xlabel"] != "" and a["ylabel"] != "" or a is not fig["axes"][0] and a["xlabel"] != "",

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "repro/paper_figures.hpp"
+#include "repro/reproduce.hpp" // timed_s: the time every speed-up divides
 #include "sim/simulation.hpp"
 #include "source_root.hpp"
 
@@ -33,11 +34,6 @@ double phase_s(const nlohmann::json& r, const std::string& name) {
   for (const auto& p : r["phases"])
     if (p["name"] == name) return p["max_s"].get<double>();
   return 0;
-}
-
-// The time the paper's speed-up divides: its timed region when the algorithm marks one.
-double timed_s(const nlohmann::json& r) {
-  return r.contains("timed_s") ? r["timed_s"].get<double>() : r["virtual_time_s"].get<double>();
 }
 
 double kurc_render_s(const nlohmann::json& r) {

@@ -32,12 +32,12 @@ TEST(ReproduceCompositing, CommittedTablesAreCurrentAtEightNodes) {
   int checked = 0;
   for (const auto& row : test::read_csv(kRoot + "/results/compositing/merging.csv")) {
     if (row.at("scene") != "2pot" || row.at("machine") != "ipsc2" || row.at("topology") != "cube" ||
-        row.at("size") != "400" || row.at("nodes") != "8")
+        row.at("width") != "400" || row.at("nodes") != "8")
       continue;
     for (const auto& ph : r["phases"])
-      if (ph["name"] == row.at("contender")) {
+      if (ph["name"] == row.at("algorithm")) {
         EXPECT_EQ(fixed(ph["max_s"].get<double>() * 1e3, 3), row.at("merging_ms"))
-            << row.at("contender");
+            << row.at("algorithm");
         ++checked;
       }
   }
