@@ -10,7 +10,7 @@
 #include "mpi/mpi_comm.hpp"
 #include "mpi/mpi_context.hpp"
 #include "mpi/mpi_session.hpp"
-#include "mpi/probe_cpu.hpp"
+#include "mpi/premap_heap.hpp"
 #include "scene/load.hpp"
 #include "util/error.hpp"
 
@@ -25,16 +25,6 @@ namespace {
 }
 
 // Page faults this process took so far (getrusage: minor faults, a page mapped at first touch).
-// A node's memory under --memory (0: no limit): the value, or the machine's own times a factor.
-double node_memory_what_if(const SimConfig& cfg) {
-  const auto m = cfg.what_ifs.get("memory");
-  if (!m) return 0.0;
-  if (!m->relative) return m->value;
-  MachineFigures f = machine_figures(machine_spec(cfg.machine), 1);
-  apply_what_ifs(cfg.what_ifs, f);
-  return f.memory_bytes.front();
-}
-
 long minor_faults() {
   rusage u{};
   getrusage(RUSAGE_SELF, &u);
@@ -92,17 +82,9 @@ std::vector<FrameImage> unpack_images(const Bytes& b) {
   return out;
 }
 
-} // namespace
-
-SimResult run_mpi(const SimConfig& cfg) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  int rank = 0, world = 1;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  MPI_Comm_size(MPI_COMM_WORLD, &world);
-  const Algorithm& algo = cfg.custom ? *cfg.custom : find_algorithm(cfg.algorithm);
-  AlgorithmOptions options = cfg.options;
-  validate_options(algo, options, true);
-  // The host computer of Blazek's methods is the last rank: P nodes need P + 1 processes.
+// The node count MPI gives (the host computer of Blazek's methods is the last rank: P nodes need
+// P + 1 processes), checked against the topology and --nodes.
+int mpi_nodes(const SimConfig& cfg, const Algorithm& algo, int world) {
   const int P = world - (algo.uses_host ? 1 : 0);
   if (P < 1)
     throw UsageError(algo.name + " runs a host computer beside its nodes: mpirun -np P+1 (at "
@@ -112,55 +94,46 @@ SimResult run_mpi(const SimConfig& cfg) {
     throw UsageError("--nodes " + std::to_string(cfg.nodes) + " but MPI gives " +
                      std::to_string(P) + " nodes (mpirun -np " +
                      std::to_string(cfg.nodes + (algo.uses_host ? 1 : 0)) + ")");
+  return P;
+}
 
+// The scene, and the memory a node's buffers will need mapped before the clock starts
+// (mpi/premap_heap.hpp): 24 bytes a pixel hold a full-screen z-buffer and a picture's worth of
+// pixel records at once, and the pictures it delivers stay in memory until the report (12 bytes a
+// pixel of its share).
+Scene load_premapped(const SimConfig& cfg, int P) {
   LoadOptions lo;
   lo.width = cfg.width;
   lo.height = cfg.height;
-  const Scene scene = load_scene(cfg.scene_path, lo);
-  // The memory a node's buffers will need, mapped before the clock starts (mpi/probe_cpu.hpp): 24
-  // bytes a pixel hold a full-screen z-buffer and a picture's worth of pixel records at once, and
-  // the pictures it delivers stay in memory until the report (12 bytes a pixel of its share).
+  Scene scene = load_scene(cfg.scene_path, lo);
   const std::size_t pixels = std::size_t(scene.width) * std::size_t(scene.height);
   const std::size_t frames = std::size_t(std::max(1, cfg.options.frames));
   premap_heap((std::size_t(64) << 20) + 24 * pixels + 12 * pixels * frames / std::size_t(P));
+  return scene;
+}
 
-  NodeStats stats;
-  if (cfg.timeline) stats.log = std::make_shared<EventLog>();
-  std::vector<FrameImage> images;
-  MpiComm::clock_name(); // a bad ZCUBE_MPI_CLOCK is a usage error before anything runs
-  MpiComm comm(MPI_COMM_WORLD, P, cfg.topology, stats);
-  MpiContext ctx(comm, stats, scene, options, node_memory_what_if(cfg), images);
-  MPI_Barrier(MPI_COMM_WORLD);
-  comm.reset_clock();
-  const long faults0 = minor_faults();
-  const double cpu0 = cpu_seconds(), wall0_s = MPI_Wtime();
-  try {
-    if (rank < P)
-      algo.node(ctx);
-    else
-      algo.host(ctx);
-  } catch (const std::exception& ex) {
-    abort_job(rank, ex.what());
-  }
-  comm.flush();
-  stats.finish_s = comm.now();
-  const long faults = minor_faults() - faults0;
-  // The share of the run a rank had a core: its CPU time over its wall-clock time. A rank that
-  // waits polls (with OpenMPI's mpi_yield_when_idle it yields its core only to another program
-  // that wants it), so below 1 other programs ran on its core; the lowest rank's.
-  const double wall_s = MPI_Wtime() - wall0_s;
-  const double core_share = -max_over_ranks(-(wall_s > 0 ? (cpu_seconds() - cpu0) / wall_s : 1.0));
-  const double total = max_over_ranks(stats.finish_s);
+// A node's memory under --memory (0: no limit): the value, or the machine's own times a factor.
+double node_memory_what_if(const SimConfig& cfg) {
+  const auto m = cfg.what_ifs.get("memory");
+  if (!m) return 0.0;
+  if (!m->relative) return m->value;
+  MachineFigures f = machine_figures(machine_spec(cfg.machine), 1);
+  apply_what_ifs(cfg.what_ifs, f);
+  return f.memory_bytes.front();
+}
 
-  const nlohmann::json mine = {
-      {"record", ctx.record(rank == P ? nlohmann::json("srm") : nlohmann::json(rank))},
-      {"host", processor_name()}};
-  const std::string text = mine.dump();
-  const auto records = gather_to_root(Bytes(text.begin(), text.end()));
-  const auto pictures = gather_to_root(pack_images(images));
+// What the run cost the host, for the report.
+struct HostFigures {
+  std::chrono::steady_clock::time_point wall0;
+  long faults = 0;
+  double core_share = 1;
+};
 
+// At rank 0: the report from every rank's record and pictures.
+SimResult mpi_report(const SimConfig& cfg, const Algorithm& algo, const Scene& scene, int P,
+                     double total, const std::vector<Bytes>& records,
+                     const std::vector<Bytes>& pictures, const HostFigures& h) {
   SimResult res;
-  if (rank != 0) return res;
   std::vector<NodeRecord> nodes;
   nlohmann::json processors = nlohmann::json::array();
   for (const auto& b : records) {
@@ -186,11 +159,63 @@ SimResult run_mpi(const SimConfig& cfg) {
   add_node_sections(j, nodes, P, total);
   add_image_section(j, all, scene, cfg, true, res.images);
   j["host"] = {{"wall_time_s",
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count()},
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - h.wall0).count()},
                {"peak_rss_bytes", peak_rss_bytes()},
-               {"page_faults_timed", faults}, // node 0's, between the barrier and its finish
-               {"core_share", core_share}};
+               {"page_faults_timed", h.faults}, // node 0's, between the barrier and its finish
+               {"core_share", h.core_share}};
   return res;
+}
+
+} // namespace
+
+SimResult run_mpi(const SimConfig& cfg) {
+  HostFigures host;
+  host.wall0 = std::chrono::steady_clock::now();
+  int rank = 0, world = 1;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  MPI_Comm_size(MPI_COMM_WORLD, &world);
+  const Algorithm& algo = cfg.custom ? *cfg.custom : find_algorithm(cfg.algorithm);
+  AlgorithmOptions options = cfg.options;
+  validate_options(algo, options, true);
+  const int P = mpi_nodes(cfg, algo, world);
+  const Scene scene = load_premapped(cfg, P);
+
+  NodeStats stats;
+  if (cfg.timeline) stats.log = std::make_shared<EventLog>();
+  std::vector<FrameImage> images;
+  MpiComm::clock_name(); // a bad ZCUBE_MPI_CLOCK is a usage error before anything runs
+  MpiComm comm(MPI_COMM_WORLD, P, cfg.topology, stats);
+  MpiContext ctx(comm, stats, scene, options, node_memory_what_if(cfg), images);
+  MPI_Barrier(MPI_COMM_WORLD);
+  comm.reset_clock();
+  const long faults0 = minor_faults();
+  const double cpu0 = cpu_seconds(), wall0_s = MPI_Wtime();
+  try {
+    if (rank < P)
+      algo.node(ctx);
+    else
+      algo.host(ctx);
+  } catch (const std::exception& ex) {
+    abort_job(rank, ex.what());
+  }
+  comm.flush();
+  stats.finish_s = comm.now();
+  host.faults = minor_faults() - faults0;
+  // The share of the run a rank had a core: its CPU time over its wall-clock time. A rank that
+  // waits polls (with OpenMPI's mpi_yield_when_idle it yields its core only to another program
+  // that wants it), so below 1 other programs ran on its core; the lowest rank's.
+  const double wall_s = MPI_Wtime() - wall0_s;
+  host.core_share = -max_over_ranks(-(wall_s > 0 ? (cpu_seconds() - cpu0) / wall_s : 1.0));
+  const double total = max_over_ranks(stats.finish_s);
+
+  const nlohmann::json mine = {
+      {"record", ctx.record(rank == P ? nlohmann::json("srm") : nlohmann::json(rank))},
+      {"host", processor_name()}};
+  const std::string text = mine.dump();
+  const auto records = gather_to_root(Bytes(text.begin(), text.end()));
+  const auto pictures = gather_to_root(pack_images(images));
+  if (rank != 0) return SimResult{};
+  return mpi_report(cfg, algo, scene, P, total, records, pictures, host);
 }
 
 } // namespace zc

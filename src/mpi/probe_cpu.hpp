@@ -50,11 +50,4 @@ struct CpuProbe {
 // one slowdown over it (docs/machines.md, "How the probe measures the CPU").
 CpuProbe measure_cpu(const std::string& root, double min_seconds, const ProbeRanks& ranks);
 
-// Maps and touches `bytes` of heap before anything is timed and keeps them (every allocation from
-// the heap, none given back): the probe's loops and the MPI runs then find their buffers in memory
-// that is already there, as a 1990 node's physical memory was, instead of paying the host's demand
-// paging (a page fault and a zeroed page at a buffer's first touch) in whichever loop touches a
-// fresh buffer first. The probe and the MPI runs both call it.
-void premap_heap(std::size_t bytes);
-
 } // namespace zc

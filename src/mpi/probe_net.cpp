@@ -7,7 +7,7 @@
 
 #include "comm/comm.hpp"
 #include "mpi/mpi_comm.hpp"
-#include "mpi/probe_cpu.hpp"
+#include "mpi/premap_heap.hpp"
 
 namespace zc {
 

@@ -124,11 +124,10 @@ struct alignas(64) WorkerTally {
   std::uint64_t covered = 0; // pixels written first by some triangle (TPF without a scan)
 };
 
-Counters render_into(const Scene& scene, int threads, Framebuffer& image, RenderScratch& scratch) {
-  threads = std::max(1, threads);
-  const NodeRenderer nr(scene);
-  // A frame buffer of the right shape is cleared band by band by the threads that draw the bands
-  // (with the first chunk of triangles); any other is made anew, already clear.
+// A frame buffer of the right shape is cleared band by band by the threads that draw the bands
+// (with the first chunk of triangles); any other is made anew, already clear. Returns whether the
+// bands are to be cleared.
+bool prepare_image(const Scene& scene, const NodeRenderer& nr, Framebuffer& image) {
   bool clear_bands = image.width() == scene.width && image.rows().begin == 0 &&
                      image.rows().stride == 1 && image.rows().end == scene.height;
   if (!clear_bands) {
@@ -137,6 +136,46 @@ Counters render_into(const Scene& scene, int threads, Framebuffer& image, Render
     image.clear(scene.background);
     clear_bands = false;
   }
+  return clear_bands;
+}
+
+// Triangles set up and drawn a chunk at a time. One thread on a small frame buffer (a few L2
+// caches' worth) sets up and draws a small chunk at a time, so its screen triangles (about 200
+// bytes each) are drawn while still in cache and the frame buffer, revisited by every chunk,
+// mostly stays there too. A large frame buffer, or several threads (two synchronisations a
+// chunk), take large chunks: each chunk visits the bands again.
+std::size_t chunk_triangles(const Scene& scene, int threads) {
+  const std::size_t fb_bytes =
+      std::size_t(scene.width) * std::size_t(scene.height) * Framebuffer::kLocationBytes;
+  return threads == 1 && fb_bytes <= (std::size_t(4) << 20) ? 2048 : std::size_t(1) << 17;
+}
+
+// One band's rows drawn from every worker's set-up triangles (those binned to the band).
+void draw_band(int band, int band_h, int bands, const std::vector<TriangleBatch>& batches,
+               const std::vector<BandBins>& bins, const NodeRenderer& nr, const RowSet& rows,
+               Framebuffer& image, Counters& c, std::uint64_t* covered) {
+  for (std::size_t k = 0; k < batches.size(); ++k) {
+    const TriangleBatch& b = batches[k];
+    if (bands == 1) {
+      for (const auto& t : b.tris)
+        draw_triangle(t, b, nr.shade(), rows, image, c, covered);
+      continue;
+    }
+    const BandBins& bin = bins[k];
+    for (std::uint32_t j = bin.start[band]; j < bin.start[band + 1]; ++j) {
+      const ScreenTriangle& t = b.tris[bin.idx[j]];
+      draw_triangle(t, b, nr.shade(), rows, image, c, covered);
+      // Bands are a host-side tiling, not the modelled program: a triangle's edges are set up
+      // once, in its first band, whatever the band height and the thread count.
+      if (band != t.ymin / band_h) --c.edge_walks;
+    }
+  }
+}
+
+Counters render_into(const Scene& scene, int threads, Framebuffer& image, RenderScratch& scratch) {
+  threads = std::max(1, threads);
+  const NodeRenderer nr(scene);
+  const bool clear_bands = prepare_image(scene, nr, image);
   std::vector<WorkerTally> tally(threads);
 
   // 1. Vertex stage, contiguous chunks per thread.
@@ -153,15 +192,7 @@ Counters render_into(const Scene& scene, int threads, Framebuffer& image, Render
   const glm::vec2* uvs = scene.uvs_if_textured();
   const int band_h = band_rows(scene.width, scene.height, threads);
   const int bands = (scene.height + band_h - 1) / band_h;
-  // One thread on a small frame buffer (a few L2 caches' worth) sets up and draws a small chunk
-  // at a time, so its screen triangles (about 200 bytes each) are drawn while still in cache and
-  // the frame buffer, revisited by every chunk, mostly stays there too. A large frame buffer, or
-  // several threads (two synchronisations a chunk), take large chunks: each chunk visits the
-  // bands again.
-  const std::size_t fb_bytes =
-      std::size_t(scene.width) * std::size_t(scene.height) * Framebuffer::kLocationBytes;
-  const std::size_t chunk =
-      threads == 1 && fb_bytes <= (std::size_t(4) << 20) ? 2048 : std::size_t(1) << 17;
+  const std::size_t chunk = chunk_triangles(scene, threads);
   std::vector<TriangleBatch>& batches = scratch.batches;
   batches.resize(threads);
   scratch.bins.resize(threads);
@@ -181,28 +212,12 @@ Counters render_into(const Scene& scene, int threads, Framebuffer& image, Render
     });
     std::atomic<int> next{0};
     run_on_workers(threads, [&](int w) {
-      Counters& c = tally[w].c;
-      std::uint64_t* covered = &tally[w].covered;
       for (int band; (band = next.fetch_add(1)) < bands;) {
         const RowSet rows =
             RowSet::band(band * band_h, std::min(scene.height, (band + 1) * band_h));
         if (clear_bands && c0 == 0) image.clear_rows(rows.begin, rows.end, scene.background);
-        for (int k = 0; k < threads; ++k) {
-          const TriangleBatch& b = batches[k];
-          if (bands == 1) {
-            for (const auto& t : b.tris)
-              draw_triangle(t, b, nr.shade(), rows, image, c, covered);
-            continue;
-          }
-          const BandBins& bin = scratch.bins[k];
-          for (std::uint32_t j = bin.start[band]; j < bin.start[band + 1]; ++j) {
-            const ScreenTriangle& t = b.tris[bin.idx[j]];
-            draw_triangle(t, b, nr.shade(), rows, image, c, covered);
-            // Bands are a host-side tiling, not the modelled program: a triangle's edges are set
-            // up once, in its first band, whatever the band height and the thread count.
-            if (band != t.ymin / band_h) --c.edge_walks;
-          }
-        }
+        draw_band(band, band_h, bands, batches, scratch.bins, nr, rows, image, tally[w].c,
+                  &tally[w].covered);
       }
     });
   }

@@ -289,13 +289,13 @@ std::string what_if_text(const WhatIfSpec& s, const WhatIfValue& v) {
 }
 
 std::string what_if_flag_text(const WhatIfSpec& s, const WhatIfValue& v) {
-  // Appended piecewise: GCC 12 at -O3 reports a false -Wrestrict on a chained operator+.
-  std::string text;
-  if (v.relative) text = "x";
-  text.append(format_double(v.value));
+  // A stream: GCC 12 at -O3 reports a false -Wrestrict on string concatenation here.
+  std::ostringstream o;
+  if (v.relative) o << 'x';
+  o << format_double(v.value);
   if (!v.relative && s.quantity != Q::Factor)
-    text.append(s.quantity == Q::Time ? "s" : s.quantity == Q::Rate ? "Bps" : "B");
-  return text;
+    o << (s.quantity == Q::Time ? "s" : s.quantity == Q::Rate ? "Bps" : "B");
+  return o.str();
 }
 
 std::string compose_what_if_text(const WhatIfSpec& s, const std::string& own,

@@ -102,13 +102,8 @@ ObjectTransform parse_transform(const Ctx& cx, const json& j, const std::string&
   return xf;
 }
 
-void parse_object(Scene& scene, const Ctx& cx, const json& j, std::size_t index) {
-  const std::string where = "objects[" + std::to_string(index) + "]";
-  json o = j.is_string() ? json{{"type", j}} : j;
-  if (!o.is_object()) cx.fail(where, "expected an object or a type name");
-  check_keys(cx, o, where,
-             {"type", "file", "level", "recursion", "slices", "radii", "transform", "color",
-              "material", "count", "seed", "placement", "name", "flip_winding"});
+// An object entry's shape: its type, file, tessellation and transform.
+ObjectSpec parse_shape(const Ctx& cx, const json& o, const std::string& where) {
   if (!o.contains("type")) cx.fail(where, "missing 'type'");
   ObjectSpec spec;
   spec.kind = cx.string(o["type"], where + ".type");
@@ -134,84 +129,116 @@ void parse_object(Scene& scene, const Ctx& cx, const json& j, std::size_t index)
       if (!(spec.radii[q] > 0)) cx.fail(where + ".radii", "radii must be positive");
   }
   if (o.contains("transform")) spec.xf = parse_transform(cx, o["transform"], where + ".transform");
+  return spec;
+}
 
-  bool random_colour = false, has_color = false;
-  glm::vec3 color(0.8f);
+// An object entry's colour: none (the default material), one, or random a copy.
+struct ObjectColour {
+  bool random = false, given = false;
+  glm::vec3 color = glm::vec3(0.8f);
+};
+ObjectColour parse_colour(const Ctx& cx, const json& o, const std::string& where) {
+  ObjectColour c;
   if (o.contains("color") && o.contains("material"))
     cx.fail(where, "give 'color' or 'material', not both");
   if (o.contains("color")) {
-    has_color = true;
+    c.given = true;
     if (o["color"].is_string() && o["color"].get<std::string>() == "random")
-      random_colour = true;
+      c.random = true;
     else
-      color = cx.color(o["color"], where + ".color");
+      c.color = cx.color(o["color"], where + ".color");
   }
   if (o.contains("material")) {
     const json& m = o["material"];
     if (!m.is_object()) cx.fail(where + ".material", "expected {\"kd\": [r, g, b]}");
     check_keys(cx, m, where + ".material", {"kd", "name"});
     if (!m.contains("kd")) cx.fail(where + ".material", "missing 'kd'");
-    color = cx.color(m["kd"], where + ".material.kd");
-    has_color = true;
+    c.color = cx.color(m["kd"], where + ".material.kd");
+    c.given = true;
   }
+  return c;
+}
 
-  const long long count =
-      o.contains("count") ? cx.integer(o["count"], where + ".count", 1, 1 << 20) : 1;
-  const std::uint64_t seed =
-      o.contains("seed") ? std::uint64_t(cx.integer(o["seed"], where + ".seed", 0, (1ll << 53)))
-                         : 1;
-  glm::dvec3 lo(-1), hi(1);
-  const bool placed = o.contains("placement");
-  if (placed) {
+// How an object entry's copies are made: how many, from which seed, where, which way round.
+struct Copies {
+  long long count = 1;
+  std::uint64_t seed = 1;
+  bool placed = false, flip = false;
+  glm::dvec3 lo = glm::dvec3(-1), hi = glm::dvec3(1);
+};
+Copies parse_copies(const Ctx& cx, const json& o, const std::string& where,
+                    const std::string& kind) {
+  Copies c;
+  if (o.contains("count")) c.count = cx.integer(o["count"], where + ".count", 1, 1 << 20);
+  if (o.contains("seed"))
+    c.seed = std::uint64_t(cx.integer(o["seed"], where + ".seed", 0, (1ll << 53)));
+  c.placed = o.contains("placement");
+  if (c.placed) {
     const json& p = o["placement"];
     if (!p.is_object()) cx.fail(where + ".placement", "expected {\"min\": [..], \"max\": [..]}");
     check_keys(cx, p, where + ".placement", {"min", "max"});
-    if (p.contains("min")) lo = cx.vec3(p["min"], where + ".placement.min");
-    if (p.contains("max")) hi = cx.vec3(p["max"], where + ".placement.max");
+    if (p.contains("min")) c.lo = cx.vec3(p["min"], where + ".placement.min");
+    if (p.contains("max")) c.hi = cx.vec3(p["max"], where + ".placement.max");
     for (int q = 0; q < 3; ++q)
-      if (lo[q] > hi[q]) cx.fail(where + ".placement", "min must not exceed max");
+      if (c.lo[q] > c.hi[q]) cx.fail(where + ".placement", "min must not exceed max");
   }
-  bool flip = false;
   if (o.contains("flip_winding")) {
     if (!o["flip_winding"].is_boolean()) cx.fail(where + ".flip_winding", "expected true or false");
-    if (k != "mesh") cx.fail(where + ".flip_winding", "only for meshes");
-    flip = o["flip_winding"].get<bool>();
+    if (kind != "mesh") cx.fail(where + ".flip_winding", "only for meshes");
+    c.flip = o["flip_winding"].get<bool>();
   }
-  // One random stream per object entry: x, y, z (when placed) then the colour (when random).
-  SplitMix64 g(mix_seed(seed, index));
+  return c;
+}
+
+// The copies added to the scene. One random stream per object entry: x, y, z (when placed) then
+// the colour (when random).
+void add_copies(Scene& scene, const ObjectSpec& spec, const ObjectColour& colour, const Copies& n,
+                std::size_t index) {
+  const std::string& k = spec.kind;
+  SplitMix64 g(mix_seed(n.seed, index));
   const glm::dvec3 base = spec.xf.translate;
+  if (k != "mesh") // the budget, before the first copy is tessellated
+    check_triangle_budget(scene, std::uint64_t(n.count), triangle_count(spec),
+                          (n.count > 1 ? std::to_string(n.count) + " x " : "") + "this " + k);
+  for (long long c = 0; c < n.count; ++c) {
+    ObjectSpec copy = spec;
+    if (n.placed || n.count > 1)
+      copy.xf.translate = base + glm::dvec3(g.coord(n.lo.x, n.hi.x), g.coord(n.lo.y, n.hi.y),
+                                            g.coord(n.lo.z, n.hi.z));
+    glm::vec3 col = colour.random ? random_color(g) : colour.color;
+    copy.color = col;
+    copy.material = colour.given ? color_material(scene, col) : 0;
+    if (!colour.given) copy.color = scene.materials[0].kd;
+    if (k == "mesh")
+      append_obj(scene, copy.file, copy.xf, copy.material, n.flip);
+    else
+      add_object(scene, copy);
+  }
+}
+
+void parse_object(Scene& scene, const Ctx& cx, const json& j, std::size_t index) {
+  const std::string where = "objects[" + std::to_string(index) + "]";
+  json o = j.is_string() ? json{{"type", j}} : j;
+  if (!o.is_object()) cx.fail(where, "expected an object or a type name");
+  check_keys(cx, o, where,
+             {"type", "file", "level", "recursion", "slices", "radii", "transform", "color",
+              "material", "count", "seed", "placement", "name", "flip_winding"});
+  const ObjectSpec spec = parse_shape(cx, o, where);
+  const ObjectColour colour = parse_colour(cx, o, where);
+  const Copies copies = parse_copies(cx, o, where, spec.kind);
   try {
-    if (k != "mesh") // the budget, before the first copy is tessellated
-      check_triangle_budget(scene, std::uint64_t(count), triangle_count(spec),
-                            (count > 1 ? std::to_string(count) + " x " : "") + "this " + k);
-    for (long long c = 0; c < count; ++c) {
-      ObjectSpec copy = spec;
-      if (placed || count > 1)
-        copy.xf.translate =
-            base + glm::dvec3(g.coord(lo.x, hi.x), g.coord(lo.y, hi.y), g.coord(lo.z, hi.z));
-      glm::vec3 col = random_colour ? random_color(g) : color;
-      copy.color = col;
-      copy.material = has_color ? color_material(scene, col) : 0;
-      if (!has_color) copy.color = scene.materials[0].kd;
-      if (k == "mesh")
-        append_obj(scene, copy.file, copy.xf, copy.material, flip);
-      else
-        add_object(scene, copy);
-    }
+    add_copies(scene, spec, colour, copies, index);
   } catch (const InputError& e) {
     if (e.file() == "<object>") cx.fail(where, e.reason());
     throw;
   }
 }
 
-} // namespace
-
-void load_json_scene(Scene& scene, const std::string& path) {
-  const std::string src = text::read_file(path);
-  Ctx cx{path, text::directory_of(path)};
-  json j;
+// The file parsed as JSON; a syntax error or a number beyond a double's range is an InputError
+// with its line.
+json parse_json(const std::string& path, const std::string& src) {
   try {
-    j = json::parse(src);
+    return json::parse(src);
   } catch (const json::parse_error& e) {
     int line = 1;
     for (std::size_t i = 0; i + 1 < e.byte && i < src.size(); ++i)
@@ -233,10 +260,10 @@ void load_json_scene(Scene& scene, const std::string& path) {
                          : 1 + int(std::count(src.begin(), src.begin() + long(at), '\n'));
     throw InputError(path, line, "JSON " + why + " (beyond the range of a double)");
   }
-  if (!j.is_object()) cx.fail("scene", "expected a JSON object");
-  check_keys(cx, j, "scene",
-             {"image", "background", "ambient", "lights", "camera", "cull", "texture_filter",
-              "objects", "comment", "description"});
+}
+
+// image, background, ambient.
+void parse_image(Scene& scene, const Ctx& cx, const json& j) {
   if (j.contains("image")) {
     const json& im = j["image"];
     if (!im.is_object()) cx.fail("image", "expected {\"width\": W, \"height\": H}");
@@ -256,27 +283,34 @@ void load_json_scene(Scene& scene, const std::string& path) {
       scene.ambient = cx.color(j["ambient"], "ambient");
     }
   }
-  if (j.contains("lights")) {
-    if (!j["lights"].is_array()) cx.fail("lights", "expected an array");
-    for (std::size_t i = 0; i < j["lights"].size(); ++i) {
-      const json& l = j["lights"][i];
-      const std::string w = "lights[" + std::to_string(i) + "]";
-      if (!l.is_object()) cx.fail(w, "expected {\"direction\": [..], \"color\": [..]}");
-      check_keys(cx, l, w, {"direction", "color"});
-      DirectionalLight dl;
-      if (!l.contains("direction")) cx.fail(w, "missing 'direction'");
-      glm::dvec3 d = cx.vec3(l["direction"], w + ".direction");
-      if (glm::length(d) == 0) cx.fail(w + ".direction", "must not be zero");
-      dl.direction = glm::vec3(glm::normalize(d));
-      if (l.contains("color")) dl.color = cx.color(l["color"], w + ".color");
-      scene.lights.push_back(dl);
-    }
-  }
-  if (!j.contains("lights")) { // the default: one white light from the upper left
+}
+
+// The lights, or by default one white light from the upper left.
+void parse_lights(Scene& scene, const Ctx& cx, const json& j) {
+  if (!j.contains("lights")) {
     DirectionalLight dl;
     dl.direction = glm::normalize(glm::vec3(1, -1, -1));
     scene.lights.push_back(dl);
+    return;
   }
+  if (!j["lights"].is_array()) cx.fail("lights", "expected an array");
+  for (std::size_t i = 0; i < j["lights"].size(); ++i) {
+    const json& l = j["lights"][i];
+    const std::string w = "lights[" + std::to_string(i) + "]";
+    if (!l.is_object()) cx.fail(w, "expected {\"direction\": [..], \"color\": [..]}");
+    check_keys(cx, l, w, {"direction", "color"});
+    DirectionalLight dl;
+    if (!l.contains("direction")) cx.fail(w, "missing 'direction'");
+    glm::dvec3 d = cx.vec3(l["direction"], w + ".direction");
+    if (glm::length(d) == 0) cx.fail(w + ".direction", "must not be zero");
+    dl.direction = glm::vec3(glm::normalize(d));
+    if (l.contains("color")) dl.color = cx.color(l["color"], w + ".color");
+    scene.lights.push_back(dl);
+  }
+}
+
+// cull, texture_filter.
+void parse_render_options(Scene& scene, const Ctx& cx, const json& j) {
   if (j.contains("cull")) {
     std::string c = cx.string(j["cull"], "cull");
     if (c == "none")
@@ -295,34 +329,48 @@ void load_json_scene(Scene& scene, const std::string& path) {
     else
       cx.fail("texture_filter", "expected \"nearest\" or \"bilinear\"");
   }
+}
+
+Camera parse_camera(const Ctx& cx, const json& c) {
+  if (!c.is_object()) cx.fail("camera", "expected an object");
+  check_keys(cx, c, "camera", {"eye", "target", "up", "fov", "near", "far"});
+  Camera cam;
+  if (c.contains("eye")) cam.eye = cx.vec3(c["eye"], "camera.eye");
+  if (c.contains("target")) cam.target = cx.vec3(c["target"], "camera.target");
+  if (c.contains("up")) cam.up = cx.vec3(c["up"], "camera.up");
+  if (c.contains("fov")) cam.fovy_deg = cx.number(c["fov"], "camera.fov");
+  if (c.contains("near")) cam.znear = cx.number(c["near"], "camera.near");
+  if (c.contains("far")) cam.zfar = cx.number(c["far"], "camera.far");
+  if (!(cam.fovy_deg > 0 && cam.fovy_deg < 180))
+    cx.fail("camera.fov", "must be in (0, 180) degrees");
+  if (glm::length(cam.target - cam.eye) == 0) cx.fail("camera", "eye and target coincide");
+  if (glm::length(cam.up) == 0) cx.fail("camera.up", "the zero vector (no direction)");
+  if (glm::length(glm::cross(cam.target - cam.eye, cam.up)) == 0)
+    cx.fail("camera.up", "parallel to the view direction");
+  if (cam.znear < 0 || cam.zfar < 0 || (cam.znear > 0 && cam.zfar > 0 && cam.zfar <= cam.znear))
+    cx.fail("camera", "need 0 < near < far");
+  return cam;
+}
+
+} // namespace
+
+void load_json_scene(Scene& scene, const std::string& path) {
+  const std::string src = text::read_file(path);
+  Ctx cx{path, text::directory_of(path)};
+  const json j = parse_json(path, src);
+  if (!j.is_object()) cx.fail("scene", "expected a JSON object");
+  check_keys(cx, j, "scene",
+             {"image", "background", "ambient", "lights", "camera", "cull", "texture_filter",
+              "objects", "comment", "description"});
+  parse_image(scene, cx, j);
+  parse_lights(scene, cx, j);
+  parse_render_options(scene, cx, j);
   // An empty array is a legal, empty scene (the background only).
   if (!j.contains("objects") || !j["objects"].is_array()) cx.fail("objects", "expected an array");
   for (std::size_t i = 0; i < j["objects"].size(); ++i)
     parse_object(scene, cx, j["objects"][i], i);
-
-  if (j.contains("camera")) {
-    const json& c = j["camera"];
-    if (!c.is_object()) cx.fail("camera", "expected an object");
-    check_keys(cx, c, "camera", {"eye", "target", "up", "fov", "near", "far"});
-    Camera cam;
-    if (c.contains("eye")) cam.eye = cx.vec3(c["eye"], "camera.eye");
-    if (c.contains("target")) cam.target = cx.vec3(c["target"], "camera.target");
-    if (c.contains("up")) cam.up = cx.vec3(c["up"], "camera.up");
-    if (c.contains("fov")) cam.fovy_deg = cx.number(c["fov"], "camera.fov");
-    if (c.contains("near")) cam.znear = cx.number(c["near"], "camera.near");
-    if (c.contains("far")) cam.zfar = cx.number(c["far"], "camera.far");
-    if (!(cam.fovy_deg > 0 && cam.fovy_deg < 180))
-      cx.fail("camera.fov", "must be in (0, 180) degrees");
-    if (glm::length(cam.target - cam.eye) == 0) cx.fail("camera", "eye and target coincide");
-    if (glm::length(cam.up) == 0) cx.fail("camera.up", "the zero vector (no direction)");
-    if (glm::length(glm::cross(cam.target - cam.eye, cam.up)) == 0)
-      cx.fail("camera.up", "parallel to the view direction");
-    if (cam.znear < 0 || cam.zfar < 0 || (cam.znear > 0 && cam.zfar > 0 && cam.zfar <= cam.znear))
-      cx.fail("camera", "need 0 < near < far");
-    scene.camera = cam;
-  } else {
-    scene.camera = framing_camera(scene_bounds(scene));
-  }
+  scene.camera =
+      j.contains("camera") ? parse_camera(cx, j["camera"]) : framing_camera(scene_bounds(scene));
 }
 
 } // namespace zc
