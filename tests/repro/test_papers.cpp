@@ -32,7 +32,8 @@ TEST(Papers, TheFourOfTheResultsInTheirOrder) {
 
 TEST(Papers, EachPaperHasItsAlgorithmsFolderOrIsAStudy) {
   const std::filesystem::path algo = std::filesystem::path(ZCUBE_SOURCE_DIR) / "src" / "algo";
-  for (const auto& p : papers())
-    if (p.name != "compositing") // the study of every paper's compositing (algo/sort_last/)
-      EXPECT_TRUE(std::filesystem::is_directory(algo / p.name)) << p.name;
+  for (const auto& p : papers()) {
+    if (p.name == "compositing") continue; // the study of every paper's compositing (sort_last/)
+    EXPECT_TRUE(std::filesystem::is_directory(algo / p.name)) << p.name;
+  }
 }
