@@ -265,7 +265,7 @@ std::string readme(const Written& w, bool full) {
          "radix-k\n\n"
          "Written by `zcube reproduce compositing" +
          std::string(full ? " --full" : "") +
-         "` (src/repro/reproduce_compositing.cpp, algo/compositing_study.cpp; "
+         "` (src/repro/reproduce_compositing.cpp, algo/sort_last/compositing_study.cpp; "
          "docs/compositing.md). Scenes: " +
          (full ? "Kurc et al.'s six (scenes/kurc/1pot.json .. 8pot_2.json, named as in "
                  "results/kurc)"
