@@ -15,7 +15,7 @@
    relative errors of those twelve figures (the workload column has no stated unit: only its
    shares are compared). A pure-Python projection of the rows each triangle
    covers (the pixel-centre rule of src/raster/setup.cpp) and the elastic cut of
-   src/algo/elastic_partition.cpp screen thousands of cameras; the best are then refined and
+   src/algo/charles/elastic_partition.cpp screen thousands of cameras; the best are then refined and
    finally measured by zcube itself (`zcube run --algorithm elastic --nodes 4`), and only zcube's
    numbers are written. Nothing else of the paper (speed-ups, times) enters the search.
 
@@ -189,7 +189,7 @@ def scene_json(x, centre, radius):
 
 
 def partition(load, parts):
-    """src/algo/elastic_partition.cpp, elastic_partition()."""
+    """src/algo/charles/elastic_partition.cpp, elastic_partition()."""
     h = len(load)
     cum = [0]
     for v in load:

@@ -3,6 +3,7 @@
 #include "cli/parse.hpp"
 #include "cli/paths.hpp"
 #include "cli/sim_options.hpp"
+#include "repro/papers.hpp"
 #include "repro/reproduce.hpp"
 #include "repro/simulate.hpp"
 #include "run/batch.hpp"
@@ -24,9 +25,10 @@ static int cmd_reproduce(std::vector<std::string> args) {
   o.jobs = default_jobs();
   std::string which = "all";
   bool no_plots = false, no_calibration = false;
-  app.add_option("paper", which, "kurc, charles (charles95), blazek (blazek91), compositing or all")
-      ->check(CLI::IsMember(
-          {"kurc", "charles", "blazek", "charles95", "blazek91", "compositing", "all"}))
+  std::vector<std::string> choices = paper_names_and_aliases();
+  choices.push_back("all");
+  app.add_option("paper", which, "a paper, or all of them and the fidelity table:" + papers_help())
+      ->check(CLI::IsMember(choices))
       ->capture_default_str();
   app.add_option("--out", o.out, "output directory")->capture_default_str();
   [[maybe_unused]] auto* jobs_opt =
@@ -52,9 +54,8 @@ static int cmd_reproduce(std::vector<std::string> args) {
   simgrid.apply();
   o.plots = !no_plots;
   o.calibration = !no_calibration;
-  if (which == "charles95") which = "charles"; // the names docs/index.md gives the papers
-  if (which == "blazek91") which = "blazek";
-  if (which != "all") o.papers = {which};
+  if (which != "all")
+    o.papers = {find_paper(which)->name}; // an alias: the names docs/index.md uses
 #ifdef ZCUBE_HAVE_MPI
   // Under mpirun: the simulations are shared among the ranks; rank 0 writes the results.
   std::optional<MpiSession> mpi;

@@ -1,8 +1,10 @@
 #include "machine/cpu_model.hpp"
 
+#include <filesystem>
+
 #include <nlohmann/json.hpp>
 
-#include "machine/cpu_data.hpp"
+#include "machine/machine_data.hpp"
 #include "util/error.hpp"
 
 namespace zc {
@@ -10,7 +12,7 @@ namespace zc {
 namespace {
 
 const nlohmann::json& operations_json() {
-  static const nlohmann::json j = nlohmann::json::parse(cpu_data::kOperations);
+  static const nlohmann::json j = nlohmann::json::parse(machine_data::kOperations);
   return j;
 }
 
@@ -26,8 +28,7 @@ double mix_cycles(const std::map<std::string, double>& mix, const CpuModel& cpu)
   return c;
 }
 
-CpuModel parse_cpu(const char* text) {
-  const nlohmann::json j = nlohmann::json::parse(text);
+CpuModel parse_cpu_json(const nlohmann::json& j) {
   CpuModel m;
   m.name = j.at("name");
   m.description = j.at("description");
@@ -48,6 +49,30 @@ CpuModel parse_cpu(const char* text) {
     *cycles[i].second = op.zcube_only ? 0 : *zcube[i].second;
   }
   return m;
+}
+
+// A CPU data file, its errors one line naming the file (nlohmann's name the field).
+CpuModel parse_cpu(const machine_data::DataFile& f) {
+  CpuModel m;
+  try {
+    m = parse_cpu_json(nlohmann::json::parse(f.text));
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(f.path, 0, e.what());
+  }
+  if (m.name != std::filesystem::path(f.path).stem().string())
+    throw InputError(f.path, 0, "field 'name': '" + m.name + "' is not the file's name");
+  return m;
+}
+
+// Every CPU built in (machines/cpu/*.json), in file name order.
+const std::vector<CpuModel>& cpu_models() {
+  static const std::vector<CpuModel> v = [] {
+    std::vector<CpuModel> out;
+    for (const auto& f : machine_data::cpu_files())
+      out.push_back(parse_cpu(f));
+    return out;
+  }();
+  return v;
 }
 
 } // namespace
@@ -78,16 +103,22 @@ double plausible_high() {
 }
 
 const std::vector<std::string>& cpu_names() {
-  static const std::vector<std::string> n = {"i80386", "i860xr"};
+  static const std::vector<std::string> n = [] {
+    std::vector<std::string> out;
+    for (const auto& m : cpu_models())
+      out.push_back(m.name);
+    return out;
+  }();
   return n;
 }
 
 const CpuModel& cpu_model(const std::string& name) {
-  static const CpuModel i386 = parse_cpu(cpu_data::kI80386);
-  static const CpuModel i860 = parse_cpu(cpu_data::kI860XR);
-  if (name == "i80386") return i386;
-  if (name == "i860xr") return i860;
-  throw UsageError("unknown CPU '" + name + "': expected i80386 or i860xr");
+  for (const auto& m : cpu_models())
+    if (m.name == name) return m;
+  std::string names;
+  for (const auto& n : cpu_names())
+    names += (names.empty() ? "" : ", ") + n;
+  throw UsageError("unknown CPU '" + name + "': expected one of " + names);
 }
 
 CostTable zcube_loop_seconds(const CpuModel& cpu) {

@@ -4,6 +4,8 @@
 
 #include "machine/calibrated_costs.hpp"
 #include "machine/cpu_model.hpp"
+#include "machine/machine_data.hpp"
+#include "machine/machine_file.hpp"
 #include "util/error.hpp"
 
 namespace zc {
@@ -103,83 +105,41 @@ CostTable prior_i386_costs() {
 
 namespace {
 
-std::vector<MachineSpec> make_specs() {
-  std::vector<MachineSpec> v;
-  {
-    MachineSpec m;
-    m.name = "ipsc2";
-    m.description = "Intel iPSC/2: 80386+80387 16 MHz nodes, DCM circuit-switched hypercube";
-    m.memory_bytes = 4.0 * 1048576;     // 4 MB base (docs/machines.md)
-    m.os_resident_bytes = 512.0 * 1024; // NX/2 + program: 256 KiB..1 MiB (docs/memory.md)
-    m.net.startup_short_s = 275e-6;     // Blazek ch. IV, read as microseconds (docs/machines.md)
-    m.net.startup_long_s = 275e-6;
-    m.net.short_max_bytes = 100;
-    m.net.per_byte_s = 1.0 / 2.8e6; // 2.8 MB/s channel (Nugent 1988)
-    // The same Direct-Connect Module as the iPSC/860, where Bokhari 1990 measured 10-30 us a hop;
-    // the low end, as the DCM routes the header in hardware (docs/machines.md).
-    m.net.per_hop_s = 10e-6;
-    m.net.switching = Switching::Circuit;
-    m.net.host_startup_s = 1e-3;  // SRM link: assumption, Ethernet-class (docs/machines.md)
-    m.net.host_per_byte_s = 1e-6; // ~1 MB/s: assumption
-    m.cpu = "i80386";
-    m.cost = i386_costs();
-    m.cost_calibrated = calibrated::kFitted;
-    v.push_back(m);
-  }
-  {
-    MachineSpec m;
-    m.name = "ipsc860";
-    m.description = "Intel iPSC/860: i860 XR 40 MHz nodes, DCM circuit-switched hypercube";
-    m.memory_bytes = 8.0 * 1048576;      // ORNL CSEP
-    m.os_resident_bytes = 1024.0 * 1024; // NX + program: 0.5..2 MiB (docs/memory.md)
-    m.net.startup_short_s = 75e-6;       // Bokhari 1990 (docs/machines.md, low-medium confidence)
-    m.net.startup_long_s = 136e-6;
-    m.net.short_max_bytes = 100;
-    m.net.per_byte_s = 0.36e-6;
-    m.net.per_hop_s = 10e-6; // 10-30 us per hop (Bokhari; Dunigan)
-    m.net.switching = Switching::Circuit;
-    m.net.host_startup_s = 1e-3;
-    m.net.host_per_byte_s = 1e-6;
-    m.cpu = "i860xr";
-    m.cost = i860_costs();
-    m.cost_calibrated = calibrated::kFitted;
-    v.push_back(m);
-  }
-  {
-    MachineSpec m;
-    m.name = "volvox";
-    m.description = "Archipel Volvox: i860 compute + T800 transputer links, store-and-forward";
-    m.memory_bytes = 8.0 * 1048576;      // assumption: i860 board as the iPSC/860's
-    m.os_resident_bytes = 1024.0 * 1024; // assumption: as the iPSC/860's NX (docs/memory.md)
-    m.net.startup_short_s = 50e-6;       // assumption (docs/machines.md): software overhead per hop
-    m.net.startup_long_s = 50e-6;
-    m.net.short_max_bytes = 100;
-    m.net.per_byte_s = 1.0 / 1.7e6; // T800 link, ~1.7 MB/s achieved one way
-    m.net.both_ways_Bps = 2.35e6;   // T800 link, both directions busy: 2.35 MB/s in all
-    m.net.per_hop_s = 0;            // the per-hop cost is the whole store-and-forward step
-    m.net.switching = Switching::StoreAndForward;
-    m.net.host_startup_s = 1e-3;
-    m.net.host_per_byte_s = 1e-6;
-    m.cpu = "i860xr";
-    m.cost = i860_costs();
-    m.cost_calibrated = calibrated::kFitted;
-    v.push_back(m);
-  }
+// Every machine built in (machines/*.json), in file name order. The calibration's multipliers
+// correct the operation mixes, which every CPU shares: each machine's table is its CPU's, scaled.
+const std::vector<MachineSpec>& builtin_specs() {
+  static const std::vector<MachineSpec> v = [] {
+    std::vector<MachineSpec> out;
+    for (const auto& f : machine_data::machine_files()) {
+      MachineSpec m = parse_machine_file(f.path, f.text, cpu_names());
+      m.cost = cpu_seconds(cpu_model(m.cpu), calibrated_group_scale());
+      m.cost_calibrated = calibrated::kFitted;
+      out.push_back(std::move(m));
+    }
+    return out;
+  }();
   return v;
 }
 
 } // namespace
 
 const std::vector<std::string>& machine_names() {
-  static const std::vector<std::string> n = {"ipsc2", "ipsc860", "volvox"};
+  static const std::vector<std::string> n = [] {
+    std::vector<std::string> out;
+    for (const auto& m : builtin_specs())
+      out.push_back(m.name);
+    return out;
+  }();
   return n;
 }
 
 const MachineSpec& machine_spec(const std::string& name) {
-  static const std::vector<MachineSpec> specs = make_specs();
-  for (const auto& s : specs)
+  for (const auto& s : builtin_specs())
     if (s.name == name) return s;
-  throw UsageError("--machine '" + name + "': expected ipsc2, ipsc860, volvox or a platform .xml");
+  std::string names;
+  for (const auto& n : machine_names())
+    names += (names.empty() ? "" : ", ") + n;
+  throw UsageError("--machine '" + name + "': expected " + names + " or a platform .xml");
 }
 
 } // namespace zc

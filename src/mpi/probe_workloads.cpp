@@ -4,9 +4,9 @@
 #include <memory>
 
 #include "algo/composite.hpp"
-#include "algo/elastic_multiscatter.hpp"
-#include "algo/elastic_partition.hpp"
-#include "algo/elastic_vertices.hpp"
+#include "algo/charles/elastic_multiscatter.hpp"
+#include "algo/charles/elastic_partition.hpp"
+#include "algo/charles/elastic_vertices.hpp"
 #include "compositing/dense.hpp"
 #include "compositing/gather.hpp"
 #include "compositing/winning_pixels.hpp"

@@ -17,6 +17,7 @@
 #include "repro/claims.hpp"
 #include "repro/gantt_chart.hpp"
 #include "repro/json_file.hpp"
+#include "repro/papers.hpp"
 #include "repro/plot_script.hpp"
 #include "repro/progress.hpp"
 #include "repro/provenance.hpp"
@@ -235,20 +236,17 @@ int reproduce(const ReproduceOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   if (o.write) prepare_output_dir(o.out); // before anything runs
   std::vector<PaperPlan> plans;
-  for (const auto& p : o.papers) {
-    if (p == "kurc")
-      plans.push_back(kurc_plan(o));
-    else if (p == "charles")
-      plans.push_back(charles_plan(o));
-    else if (p == "blazek")
-      plans.push_back(blazek_plan(o));
-    else if (p == "compositing")
-      plans.push_back(compositing_plan(o));
-    else
-      throw UsageError("reproduce: unknown paper '" + p +
-                       "' (kurc, charles, blazek, compositing or all)");
+  const bool all = o.papers.empty();
+  if (all)
+    for (const auto& p : papers())
+      plans.push_back(p.plan(o));
+  for (const auto& name : o.papers) {
+    const Paper* p = find_paper(name);
+    if (!p)
+      throw UsageError("reproduce: unknown paper '" + name + "' (" + paper_names_text() +
+                       " or all)");
+    plans.push_back(p->plan(o));
   }
-  const bool all = o.papers.size() == 4;
   if (all) {
     plans.push_back(fidelity_plan(o));
     plans.push_back(claims_plan(o)); // after every paper's plan: it reads their runs

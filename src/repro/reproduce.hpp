@@ -18,7 +18,7 @@ namespace zc {
 struct ReproduceOptions {
   std::string root = "."; // source tree: scenes/
   std::string out = "results";
-  std::vector<std::string> papers = {"kurc", "charles", "blazek", "compositing"};
+  std::vector<std::string> papers; // names in papers(); empty: all, with the fidelity and claims
   bool full = false; // Blazek's whole grid (1..2048 spheres), compositing's to 1024 nodes; slow
   int jobs = 2;
   bool plots = true;

@@ -141,7 +141,7 @@ std::string write_charles(const Reports& reps, const std::string& dir) {
       "Written by `zcube reproduce charles` (src/repro/reproduce_charles.cpp). Paper: "
       "Charles, Lefèvre, Miguet, *An optimized and load-balanced portable parallel z-buffer*, "
       "research report RR95-25, LIP, ENS Lyon, 1995. "
-      "Algorithm: `elastic` (src/algo/elastic.cpp; every §4 step is a report phase), "
+      "Algorithm: `elastic` (src/algo/charles/elastic.cpp; every §4 step is a report phase), "
       "`--output device` (each node writes its slice to the output device, so the "
       "communication volume does not depend on the resolution, §6). Machine: the calibrated "
       "iPSC/860 model, circuit fidelity; speed-up = T(`sequential`, 1 node) / T(`elastic`, P "

@@ -2,9 +2,10 @@
 // al.'s scenes, 400x400 and 640x640, the pixel-merging time of Kurc et al.'s PAIR-RS and AAPC-HBP
 // and of binary swap, direct send, radix-k for every k dividing P and binary-swap folding (node
 // counts that are not powers of two, on a Volvox ring), all from one simulation per point
-// (algo/compositing_study.cpp): the scene loaded and rendered once, the contenders run in turn.
-// Without --full: 2 POT at 8, 16 and 64 nodes (12 and 48 on the ring); --full every Kurc scene
-// (1 POT .. 8 POT_2, as results/kurc names them) at 8..1024 (640x640 up to 256; the ring 12..96).
+// (algo/sort_last/compositing_study.cpp): the scene loaded and rendered once, the contenders run in
+// turn. Without --full: 2 POT at 8, 16 and 64 nodes (12 and 48 on the ring); --full every Kurc
+// scene (1 POT .. 8 POT_2, as results/kurc names them) at 8..1024 (640x640 up to 256; the
+// ring 12..96).
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -266,7 +267,7 @@ std::string readme(const Written& w, bool full) {
          "radix-k\n\n"
          "Written by `zcube reproduce compositing" +
          std::string(full ? " --full" : "") +
-         "` (src/repro/reproduce_compositing.cpp, algo/compositing_study.cpp; "
+         "` (src/repro/reproduce_compositing.cpp, algo/sort_last/compositing_study.cpp; "
          "docs/compositing.md). Scenes: " +
          (full ? "Kurc et al.'s six (scenes/kurc/1pot.json .. 8pot_2.json, named as in "
                  "results/kurc)"

@@ -4,6 +4,11 @@
 The layers are the ```layers block of docs/architecture.md: one line per folder of src/,
 "folder: lower folders it builds on". A folder may include itself and anything reachable
 from it in that graph, nothing else. The graph must have no cycle and name every folder.
+Within a folder, its subfolders are layers too once the block names one ("algo/kurc: algo", where
+"algo" is then the files at the top of src/algo/): a subfolder may include itself and what it
+reaches, and the block must name every subfolder of that folder. The top's .cpp files may include
+its subfolders (a registry ties them together), the top's headers may not (the subfolders build on
+them). From another folder, a subfolder counts as its folder.
 Usage: check_layers.py [repository root]
 """
 import os
@@ -49,22 +54,54 @@ for f in below:
     if f in allowed[f]:
         errors.append(f"docs/architecture.md: the layers have a cycle through {f}")
 
-include = re.compile(r'^\s*#\s*include\s+"([a-z_]+)/')
+for name in below:
+    parent, _, sub = name.partition("/")
+    if sub and not os.path.isdir(os.path.join(src, parent, sub)):
+        errors.append(f"docs/architecture.md: {name} is not a folder of src/")
+for f in folders:
+    if any(n.startswith(f + "/") for n in below):
+        for sub in sorted(os.listdir(os.path.join(src, f))):
+            if os.path.isdir(os.path.join(src, f, sub)) and f"{f}/{sub}" not in below:
+                errors.append(f"src/{f}/{sub}: not in the layers of docs/architecture.md")
+
+
+def layer_of(parts):
+    """The layer of a path within src/ given as its folders: a named subfolder, else the folder."""
+    if len(parts) > 1 and f"{parts[0]}/{parts[1]}" in below:
+        return f"{parts[0]}/{parts[1]}"
+    return parts[0]
+
+
+def may_include(layer, is_header, target):
+    if target == layer or target in allowed.get(layer, set()):
+        return True
+    top, target_top = layer.split("/")[0], target.split("/")[0]
+    if target_top != top:  # another folder: its subfolders count as the folder
+        return target_top in allowed.get(top, set())
+    return layer == top and not is_header  # the top's sources may include its subfolders
+
+
+include = re.compile(r'^\s*#\s*include\s+"([a-z_]+(?:/[a-z_]+)*)/[^/"]+"')
 for f in folders:
     for dirpath, _, files in os.walk(os.path.join(src, f)):
+        rel_dir = os.path.relpath(dirpath, src).split(os.sep)
+        layer = layer_of(rel_dir)
         for name in sorted(files):
             if not name.endswith((".cpp", ".hpp", ".h")):
                 continue
             path = os.path.join(dirpath, name)
             for n, line in enumerate(open(path, encoding="utf-8", errors="replace"), 1):
                 m = include.match(line)
-                if m and m.group(1) != f and m.group(1) not in allowed.get(f, set()):
+                if not m:
+                    continue
+                target = layer_of(m.group(1).split("/"))
+                if not may_include(layer, not name.endswith(".cpp"), target):
                     rel = os.path.relpath(path, root)
-                    errors.append(f"{rel}:{n}: {f} may not include {m.group(1)}/ "
+                    errors.append(f"{rel}:{n}: {layer} may not include {target}/ "
                                   f"(layers in docs/architecture.md)")
 
 for e in errors:
     print(e, file=sys.stderr)
 if errors:
     sys.exit(1)
-print(f"layers: {len(folders)} folders of src/, includes within the documented layers")
+print(f"layers: {len(below)} folders and subfolders of src/, includes within the documented layers")

@@ -28,8 +28,8 @@ using namespace zc::test;
 
 namespace {
 
-// The comm-check algorithm (algo/comm_check: the same self-test runs under MPI, tests/mpi) on a
-// simulated machine.
+// The comm-check algorithm (algo/tools/comm_check: the same self-test runs under MPI, tests/mpi) on
+// a simulated machine.
 void expect_all_good(SimConfig c, int P) {
   c.algorithm = "comm-check";
   const auto rep = run_simulation_isolated(c);

@@ -4,7 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "algo/algorithm.hpp"
-#include "algo/compositing_study.hpp"
+#include "algo/sort_last/compositing_study.hpp"
 #include "compositing/strategy.hpp"
 #include "sim_fixtures.hpp"
 

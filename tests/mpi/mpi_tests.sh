@@ -27,7 +27,7 @@ fi
 
 case $what in
 comm)
-  # The collective and FIFO self-test (algo/comm_check) the simulated tests also run.
+  # The collective and FIFO self-test (algo/tools/comm_check) the simulated tests also run.
   for np in 1 2 4; do
     mpi $np run --backend mpi --algorithm comm-check --report "$tmp/c$np.json" >"$tmp/out" 2>&1 ||
       bad "comm-check P=$np: $(tail -3 "$tmp/out")"
