@@ -12,7 +12,8 @@ import subprocess
 import sys
 import tempfile
 
-BLOCK = re.compile(r"<!-- doc-test -->\s*```sh\n(.*?)```\s*```text\n(.*?)```", re.S)
+# The command block, at most a paragraph of prose, then the text block.
+BLOCK = re.compile(r"<!-- doc-test -->\s*```sh\n(.*?)```(?:(?!```).)*?```text\n(.*?)```", re.S)
 DOCS = ["README.md", "docs/user-guide.md"]
 
 
