@@ -12,7 +12,7 @@ using namespace zc;
 
 int main() {
   for (Fidelity f : {Fidelity::Analytic, Fidelity::Flow, Fidelity::Circuit}) {
-    SimConfig cfg;
+    RunConfig cfg;
     cfg.machine = "ipsc860";
     cfg.nodes = 32;
     cfg.fidelity = f;

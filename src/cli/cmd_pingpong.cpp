@@ -35,13 +35,13 @@ static int cmd_pingpong(std::vector<std::string> args) {
     reserve_stdout_for_result();
   else
     check_output_path(report, "--report");
-  SimConfig cfg;
+  RunConfig cfg;
   sf.apply(cfg);
   cfg.algorithm = "pingpong";
   cfg.compare_with_sequential = false;
   cfg.options.values = {{"from", std::to_string(from)}, {"sizes", sizes}};
   if (!to.empty()) cfg.options.values["to"] = to;
-  SimResult r = run_simulation(cfg);
+  RunResult r = run_simulation(cfg);
   attach_paper_figures(r.report);
   r.report["provenance"] = provenance();
   if (!report.empty()) write_result_file(report, r.report.dump(2) + "\n");

@@ -76,7 +76,7 @@ static int cmd_platform(std::vector<std::string> args) {
       flags[k] = v;
       command += " --" + k + " " + v;
     }
-  const SimConfig c = config_from_flags(flags, "");
+  const RunConfig c = config_from_flags(flags, "");
   if (c.machine.ends_with(".xml"))
     throw UsageError("--machine: expected ipsc2, ipsc860 or volvox (a built-in model)");
   PlatformEdits pe;

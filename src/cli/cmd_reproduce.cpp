@@ -62,7 +62,7 @@ static int cmd_reproduce(std::vector<std::string> args) {
   if (launched_by_mpirun()) {
     mpi.emplace();
     if (!jobs_opt->count()) o.jobs = 1;
-    o.runner = [](const std::vector<SimConfig>& cfgs, int jobs,
+    o.runner = [](const std::vector<RunConfig>& cfgs, int jobs,
                   const std::function<void(const BatchProgress&)>& progress) {
       return run_batch_sharded(cfgs, jobs, simulate_point, progress);
     };

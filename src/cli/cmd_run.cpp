@@ -32,7 +32,7 @@ namespace zc::cli {
 
 // The report fields a paper figure is matched on, known before the run (the scene's own size
 // unless --size overrides it).
-static nlohmann::json report_header(const SimConfig& cfg) {
+static nlohmann::json report_header(const RunConfig& cfg) {
   int w = cfg.width, h = cfg.height;
   if (w <= 0 || h <= 0) {
     const Scene s = load_scene(cfg.scene_path, LoadOptions{});
@@ -56,7 +56,7 @@ struct TimelineOutputs {
 };
 
 // Writes the report and pictures and prints the summary (rank 0 only under MPI).
-static int finish(SimResult& r, const std::string& report, const std::string& image,
+static int finish(RunResult& r, const std::string& report, const std::string& image,
                   const std::string& depth, const TimelineOutputs& tl) {
   r.report["provenance"] = provenance();
   if (!report.empty()) write_result_file(report, r.report.dump(2) + "\n");
@@ -180,7 +180,7 @@ static int cmd_run(std::vector<std::string> args) {
   check_image_path(depth, "--depth");
   auto flags = sf.flags();
   flags.merge(given_flags(more));
-  SimConfig cfg = config_from_flags(flags, default_scene_path());
+  RunConfig cfg = config_from_flags(flags, default_scene_path());
   if ((!image.empty() || !depth.empty()) && !find_algorithm(cfg.algorithm).draws_picture)
     throw UsageError(std::string(image.empty() ? "--depth" : "--image") + ": " + cfg.algorithm +
                      " draws no picture");
@@ -198,7 +198,7 @@ static int cmd_run(std::vector<std::string> args) {
   if (backend == "mpi") {
 #ifdef ZCUBE_HAVE_MPI
     MpiSession mpi;
-    SimResult r = run_mpi(cfg);
+    RunResult r = run_mpi(cfg);
     return mpi.rank() == 0 ? finish(r, report, image, depth, tl) : 0;
 #else
     throw UsageError("--backend mpi: this zcube was built without MPI (scripts/setup.sh installs "
@@ -208,7 +208,7 @@ static int cmd_run(std::vector<std::string> args) {
   std::optional<double> seq_s;
   if (cfg.algorithm == "elastic" && cfg.machine == "ipsc860" && // cheap tests before loading
       needs_sequential_time(report_header(cfg))) {
-    SimConfig seq = cfg;
+    RunConfig seq = cfg;
     seq.algorithm = "sequential";
     seq.nodes = 1;
     seq.options = AlgorithmOptions{};
@@ -216,7 +216,7 @@ static int cmd_run(std::vector<std::string> args) {
     const auto sr = run_simulation_isolated(seq);
     if (sr.value("status", "") == "ok") seq_s = timed_s(sr);
   }
-  SimResult r =
+  RunResult r =
       bands.draws > 0 || bands.sensitivity ? run_with_bands(cfg, bands) : run_simulation(cfg);
   attach_paper_figures(r.report);
   if (r.ok && !sensitivity_plot.empty() &&

@@ -222,7 +222,7 @@ static std::vector<nlohmann::json> run_sweep_points(const std::vector<SweepPoint
     std::cerr << "sweep: " << points.size() << " points (" << invalid << " invalid: not run), "
               << o.jobs << " at a time"
               << (ranks > 1 ? " on each of " + std::to_string(ranks) + " MPI ranks" : "") << "\n";
-  return run_points(points, [&](const std::vector<SimConfig>& cfgs) {
+  return run_points(points, [&](const std::vector<RunConfig>& cfgs) {
 #ifdef ZCUBE_HAVE_MPI
     if (mpi)
       return run_batch_sharded(cfgs, o.jobs, simulate_point,

@@ -164,8 +164,8 @@ std::map<std::string, std::string> SimFlags::flags() const {
   return m;
 }
 
-void SimFlags::apply(SimConfig& cfg) const {
-  const SimConfig c = config_from_flags(flags(), cfg.scene_path);
+void SimFlags::apply(RunConfig& cfg) const {
+  const RunConfig c = config_from_flags(flags(), cfg.scene_path);
   cfg.machine = c.machine;
   cfg.nodes = c.nodes;
   cfg.topology = c.topology;
@@ -175,7 +175,7 @@ void SimFlags::apply(SimConfig& cfg) const {
   check_simgrid_args(cfg.simgrid_args);
 }
 
-std::string describe_overrides(const SimConfig& c) {
+std::string describe_overrides(const RunConfig& c) {
   std::ostringstream s;
   for (const auto& [spec, v] : c.what_ifs.in_order())
     s << "what-if: --" << spec->flag << " " << what_if_text(*spec, v) << " (" << spec->meaning

@@ -35,7 +35,7 @@ struct SimFlags {
   // --cfg name:value and --log settings as SimGrid arguments (UsageError on a malformed one).
   std::vector<std::string> simgrid_args() const;
   // Fills cfg's machine, nodes, topology, fidelity and what-ifs (UsageError on bad values).
-  void apply(SimConfig& cfg) const;
+  void apply(RunConfig& cfg) const;
 };
 
 // --cfg, --log and --help-cfg of the commands that run batches of simulations (sweep, reproduce,
@@ -64,5 +64,5 @@ std::string whatif_help();
 
 // One line per what-if override and SimGrid setting in force (empty when there is none), so a
 // run never uses a changed figure without saying so.
-std::string describe_overrides(const SimConfig& cfg);
+std::string describe_overrides(const RunConfig& cfg);
 } // namespace zc::cli

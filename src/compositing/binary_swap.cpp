@@ -26,9 +26,9 @@ Measures binary_swap_composite(Node& n, Picture& p, const std::vector<int>& owne
       dest[y] = owner[y] < 0 ? -1 : (owner[y] & bit) ? 1 : 0;
     std::vector<Message> out = p.split({dest, self, 2, 1}, Merge::Lists, n);
     m.step_bytes.push_back(double(out[std::size_t(partner)].charged));
-    auto h = pair.isend(partner, kTagBase + stage, std::move(out[std::size_t(partner)]));
+    auto h = pair.isend(partner, kBinarySwapTag + stage, std::move(out[std::size_t(partner)]));
     std::vector<Message> in;
-    in.push_back(pair.recv_message(partner, kTagBase + stage));
+    in.push_back(pair.recv_message(partner, kBinarySwapTag + stage));
     h->wait();
     m.merge_load += p.merge(std::move(in), Merge::Lists, n);
     end_round(n);

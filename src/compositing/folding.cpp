@@ -28,9 +28,9 @@ Measures folding_composite(Node& n, Picture& p, const std::vector<int>& owner) {
     std::vector<Message> in;
     if (folded) {
       m.step_bytes.push_back(double(out[std::size_t(partner)].charged));
-      c.send(partner, kTagBase + 64, std::move(out[std::size_t(partner)]));
+      c.send(partner, kFoldingTag, std::move(out[std::size_t(partner)]));
     } else {
-      in.push_back(c.recv_message(partner, kTagBase + 64));
+      in.push_back(c.recv_message(partner, kFoldingTag));
     }
     m.merge_load += p.merge(std::move(in), Merge::Lists, n);
     end_round(n);

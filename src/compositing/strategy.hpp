@@ -40,7 +40,11 @@ std::vector<Strategy> strategies();
 void exchange(Node& n, Comm& group, Picture& p, const std::vector<int>& dest, Merge how,
               Measures& m);
 
-// Tags at and above kTagBase are the compositing layer's (below the collectives').
+// Tags at and above kTagBase are the compositing layer's (below the collectives'): a strategy's
+// messages are told apart from any other's by its own range.
 constexpr int kTagBase = 1 << 16;
+constexpr int kBinarySwapTag = kTagBase;   // + the stage (at most 63)
+constexpr int kFoldingTag = kTagBase + 64; // the fold onto a power of two
+constexpr int kTreeTag = kTagBase + 128;   // + the tree level
 
 } // namespace zc::compositing

@@ -22,9 +22,9 @@ Measures tree_composite(Node& n, Picture& p, const std::vector<int>& owner) {
     std::vector<Message> in;
     if (sends) {
       m.step_bytes.push_back(double(out[std::size_t(partner)].charged));
-      c.send(partner, kTagBase + 128 + level, std::move(out[std::size_t(partner)]));
+      c.send(partner, kTreeTag + level, std::move(out[std::size_t(partner)]));
     } else {
-      in.push_back(c.recv_message(partner, kTagBase + 128 + level));
+      in.push_back(c.recv_message(partner, kTreeTag + level));
     }
     m.merge_load += p.merge(std::move(in), Merge::Lists, n);
     end_round(n);

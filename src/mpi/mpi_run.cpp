@@ -84,7 +84,7 @@ std::vector<FrameImage> unpack_images(const Bytes& b) {
 
 // The node count MPI gives (the host computer of Blazek's methods is the last rank: P nodes need
 // P + 1 processes), checked against the topology and --nodes.
-int mpi_nodes(const SimConfig& cfg, const Algorithm& algo, int world) {
+int mpi_nodes(const RunConfig& cfg, const Algorithm& algo, int world) {
   const int P = world - (algo.uses_host ? 1 : 0);
   if (P < 1)
     throw UsageError(algo.name + " runs a host computer beside its nodes: mpirun -np P+1 (at "
@@ -101,7 +101,7 @@ int mpi_nodes(const SimConfig& cfg, const Algorithm& algo, int world) {
 // (mpi/premap_heap.hpp): 24 bytes a pixel hold a full-screen z-buffer and a picture's worth of
 // pixel records at once, and the pictures it delivers stay in memory until the report (12 bytes a
 // pixel of its share).
-Scene load_premapped(const SimConfig& cfg, int P) {
+Scene load_premapped(const RunConfig& cfg, int P) {
   LoadOptions lo;
   lo.width = cfg.width;
   lo.height = cfg.height;
@@ -113,7 +113,7 @@ Scene load_premapped(const SimConfig& cfg, int P) {
 }
 
 // A node's memory under --memory (0: no limit): the value, or the machine's own times a factor.
-double node_memory_what_if(const SimConfig& cfg) {
+double node_memory_what_if(const RunConfig& cfg) {
   const auto m = cfg.what_ifs.get("memory");
   if (!m) return 0.0;
   if (!m->relative) return m->value;
@@ -130,10 +130,10 @@ struct HostFigures {
 };
 
 // At rank 0: the report from every rank's record and pictures.
-SimResult mpi_report(const SimConfig& cfg, const Algorithm& algo, const Scene& scene, int P,
+RunResult mpi_report(const RunConfig& cfg, const Algorithm& algo, const Scene& scene, int P,
                      double total, const std::vector<Bytes>& records,
                      const std::vector<Bytes>& pictures, const HostFigures& h) {
-  SimResult res;
+  RunResult res;
   std::vector<NodeRecord> nodes;
   nlohmann::json processors = nlohmann::json::array();
   for (const auto& b : records) {
@@ -168,7 +168,7 @@ SimResult mpi_report(const SimConfig& cfg, const Algorithm& algo, const Scene& s
 
 } // namespace
 
-SimResult run_mpi(const SimConfig& cfg) {
+RunResult run_mpi(const RunConfig& cfg) {
   HostFigures host;
   host.wall0 = std::chrono::steady_clock::now();
   int rank = 0, world = 1;
@@ -214,7 +214,7 @@ SimResult run_mpi(const SimConfig& cfg) {
   const std::string text = mine.dump();
   const auto records = gather_to_root(Bytes(text.begin(), text.end()));
   const auto pictures = gather_to_root(pack_images(images));
-  if (rank != 0) return SimResult{};
+  if (rank != 0) return RunResult{};
   return mpi_report(cfg, algo, scene, P, total, records, pictures, host);
 }
 

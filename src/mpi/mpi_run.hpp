@@ -8,6 +8,6 @@ namespace zc {
 
 // Call on every rank between MPI_Init and MPI_Finalize (an MpiSession). A failure on any rank
 // aborts the job with the error on stderr (the other ranks would wait forever otherwise).
-SimResult run_mpi(const SimConfig& cfg);
+RunResult run_mpi(const RunConfig& cfg);
 
 } // namespace zc

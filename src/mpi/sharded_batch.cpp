@@ -7,12 +7,12 @@
 namespace zc {
 
 std::vector<nlohmann::json>
-run_batch_sharded(const std::vector<SimConfig>& points, int jobs, const PointRunner& run_point,
+run_batch_sharded(const std::vector<RunConfig>& points, int jobs, const PointRunner& run_point,
                   const std::function<void(const BatchProgress&)>& progress) {
   int rank = 0, size = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &size);
-  std::vector<SimConfig> mine;
+  std::vector<RunConfig> mine;
   std::vector<std::size_t> index;
   for (std::size_t i = std::size_t(rank); i < points.size(); i += std::size_t(size)) {
     mine.push_back(points[i]);

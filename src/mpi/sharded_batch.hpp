@@ -12,7 +12,7 @@ namespace zc {
 
 // Every rank calls it with the same points; rank 0 returns all the reports, the others nothing.
 std::vector<nlohmann::json>
-run_batch_sharded(const std::vector<SimConfig>& points, int jobs, const PointRunner& run_point,
+run_batch_sharded(const std::vector<RunConfig>& points, int jobs, const PointRunner& run_point,
                   const std::function<void(const BatchProgress&)>& progress = {});
 
 } // namespace zc

@@ -14,10 +14,10 @@ namespace {
 
 std::vector<double> charles_speedups(const CostTable& i860, const CalibrationOptions& o) {
   std::vector<std::unique_ptr<TempPlatform>> plats;
-  std::vector<SimConfig> cfgs;
+  std::vector<RunConfig> cfgs;
   auto add = [&](int nodes, const char* algo) {
     plats.push_back(std::make_unique<TempPlatform>("ipsc860", i860, nodes));
-    SimConfig c;
+    RunConfig c;
     c.machine = plats.back()->path();
     c.nodes = nodes;
     c.algorithm = algo;

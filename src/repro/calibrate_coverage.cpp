@@ -50,9 +50,9 @@ UncertaintySpec fold_spec(const nlohmann::json& folds, std::size_t i) {
 }
 
 // The run of fold i's held-out scene under `scheme` at the fold's multipliers, with its bands.
-SimConfig fold_run(const nlohmann::json& fold, const std::string& scheme,
+RunConfig fold_run(const nlohmann::json& fold, const std::string& scheme,
                    std::shared_ptr<const UncertaintySpec> spec, const CalibrationOptions& o) {
-  SimConfig c;
+  RunConfig c;
   c.machine = "ipsc2";
   c.nodes = kKurcTableNodes;
   c.algorithm = scheme;
@@ -80,7 +80,7 @@ double quantile_of(const nlohmann::json& values, double q) {
 
 nlohmann::json fold_coverage(const nlohmann::json& crossval, const CalibrationOptions& o) {
   const auto& folds = crossval["folds"];
-  std::vector<SimConfig> cfgs;
+  std::vector<RunConfig> cfgs;
   for (std::size_t i = 0; i < folds.size(); ++i) {
     auto spec = std::make_shared<const UncertaintySpec>(fold_spec(folds, i));
     for (const char* sch : kCoverageSchemes)

@@ -33,7 +33,7 @@ std::vector<std::vector<nlohmann::json>> kurc_reports(const std::vector<KurcRequ
                                                       const CalibrationOptions& o) {
   static std::map<std::string, nlohmann::json> made;
   std::vector<std::unique_ptr<TempPlatform>> plats;
-  std::vector<SimConfig> cfgs;
+  std::vector<RunConfig> cfgs;
   std::vector<std::vector<std::string>> keys(requests.size());
   std::vector<std::string> todo;
   for (std::size_t r = 0; r < requests.size(); ++r) {
@@ -46,7 +46,7 @@ std::vector<std::vector<nlohmann::json>> kurc_reports(const std::vector<KurcRequ
             std::find(todo.begin(), todo.end(), keys[r].back()) != todo.end())
           continue;
         todo.push_back(keys[r].back());
-        SimConfig c;
+        RunConfig c;
         c.machine = plat.path();
         c.nodes = kKurcTableNodes;
         c.algorithm = sch;

@@ -29,7 +29,7 @@ TempPlatform::~TempPlatform() {
   std::filesystem::remove(path_);
 }
 
-std::vector<nlohmann::json> run_all(const std::vector<SimConfig>& cfgs,
+std::vector<nlohmann::json> run_all(const std::vector<RunConfig>& cfgs,
                                     const CalibrationOptions& o) {
   auto reps = simulate_batch(cfgs, o.jobs, {}, true); // its later steps replay the first's
   for (std::size_t i = 0; i < reps.size(); ++i)

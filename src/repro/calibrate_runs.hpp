@@ -27,7 +27,7 @@ private:
 };
 
 // The runs, several at once; a failed one is an error naming it.
-std::vector<nlohmann::json> run_all(const std::vector<SimConfig>& cfgs,
+std::vector<nlohmann::json> run_all(const std::vector<RunConfig>& cfgs,
                                     const CalibrationOptions& o);
 double rms(const std::vector<double>& e);
 double median_abs(std::vector<double> e);

@@ -159,7 +159,7 @@ std::string write_claims(const Reports& reps, const std::string& dir) {
          md;
 }
 
-SimConfig kurc_point(const ReproduceOptions& o, const std::string& scheme, const std::string& scene,
+RunConfig kurc_point(const ReproduceOptions& o, const std::string& scheme, const std::string& scene,
                      int nodes) {
   return repro_config("ipsc2", nodes, scheme, o.root + "/scenes/kurc/" + scene + ".json", 400);
 }
@@ -175,7 +175,7 @@ PaperPlan claims_plan(const ReproduceOptions& o) {
   p.points.push_back({"charles/bone/cube16", repro_config("ipsc860", 16, "elastic", bone, 512)});
   p.points.push_back(
       {"charles/teapot512/cube16", repro_config("ipsc860", 16, "elastic", pot, 512)});
-  SimConfig ring = repro_config("ipsc860", 16, "elastic", bone, 512);
+  RunConfig ring = repro_config("ipsc860", 16, "elastic", bone, 512);
   ring.topology = Topology::Ring;
   p.points.push_back({"charles/bone/ring16", ring});
   for (const char* s : {"zbuf-exc", "pair-rs", "pair-hbp", "aapc-rs", "aapc-hbp"})
@@ -184,7 +184,7 @@ PaperPlan claims_plan(const ReproduceOptions& o) {
   p.points.push_back({"kurc/8pot_2/p16", kurc_point(o, "zbuf-exc", "8pot_2", 16)});
   for (const char* m :
        {"node-initiated", "host-broadcast", "object-forwarding", "host-initiated"}) {
-    SimConfig c =
+    RunConfig c =
         repro_config("ipsc2", 32, m, o.root + "/scenes/blazek/thesis_spheres_64.json", 512);
     c.what_ifs.set("memory", {16.0 * 1048576}); // ch. IV: "up to sixteen megabytes"
     if (std::string(m) == "host-initiated") c.options.values["packet"] = "100";

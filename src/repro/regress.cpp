@@ -103,7 +103,7 @@ std::map<std::string, nlohmann::json> run_regress(const std::vector<RegressRun>&
     }
   }
   const auto reps = run_points(
-      points, [jobs](const std::vector<SimConfig>& c) { return simulate_batch(c, jobs); });
+      points, [jobs](const std::vector<RunConfig>& c) { return simulate_batch(c, jobs); });
   std::map<std::string, nlohmann::json> out;
   for (std::size_t i = 0; i < runs.size(); ++i)
     out[runs[i].name] = reduce_report(reps[i]);

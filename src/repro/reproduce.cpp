@@ -98,8 +98,8 @@ std::string top_readme(const ReproduceOptions& o, std::size_t points,
 }
 
 // Everything a simulation depends on, as text: equal keys, equal runs. (A field added to
-// SimConfig must be added here too, or two different runs would be taken for one.)
-std::string config_key(const SimConfig& c) {
+// RunConfig must be added here too, or two different runs would be taken for one.)
+std::string config_key(const RunConfig& c) {
   if (c.custom) throw std::logic_error("reproduce plans name their algorithms");
   nlohmann::json j = program_inputs(c);
   j["machine"] = c.machine;
@@ -267,7 +267,7 @@ int reproduce(const ReproduceOptions& o) {
 
   // Plans share some points (Table 2's 16-node runs are also speed-up and fidelity points): each
   // distinct configuration is simulated once.
-  std::vector<SimConfig> cfgs;
+  std::vector<RunConfig> cfgs;
   std::map<std::string, std::size_t> index_of;
   std::vector<std::size_t> point_run;
   for (const auto& p : plans)

@@ -26,7 +26,7 @@ struct ReproduceOptions {
   bool verbose = true;
   // How the points run: a local batch by default; `mpirun zcube reproduce` passes a batch sharded
   // over the ranks, and only the rank that gets the reports (write = true) writes files.
-  std::function<std::vector<nlohmann::json>(const std::vector<SimConfig>&, int,
+  std::function<std::vector<nlohmann::json>(const std::vector<RunConfig>&, int,
                                             const std::function<void(const BatchProgress&)>&)>
       runner;
   bool write = true;
@@ -39,7 +39,7 @@ struct ReproduceOptions {
 
 struct ReproPoint {
   std::string key; // unique within a plan
-  SimConfig cfg;
+  RunConfig cfg;
 };
 using Reports = std::map<std::string, nlohmann::json>; // by point key
 
@@ -82,7 +82,7 @@ std::string plan_directory(const ReproduceOptions& o, const PaperPlan& p, std::s
 int reproduce(const ReproduceOptions& o);
 
 // Helpers shared by the plans.
-SimConfig repro_config(const std::string& machine, int nodes, const std::string& algorithm,
+RunConfig repro_config(const std::string& machine, int nodes, const std::string& algorithm,
                        const std::string& scene, int size);
 // The one time every paper's speed-up divides, on both sides (docs/papers.md), in `zcube
 // reproduce` and in `zcube sweep` alike: the report's timed_s, the paper's timed region when the

@@ -190,7 +190,7 @@ PaperPlan blazek_plan(const ReproduceOptions& o) {
         o.root + "/scenes/blazek/thesis_spheres_" + std::to_string(s) + ".json";
     for (const auto& m : kMethods)
       for (int n : kBlazekNodes) {
-        SimConfig c = repro_config("ipsc2", n, m.name, path, 512);
+        RunConfig c = repro_config("ipsc2", n, m.name, path, 512);
         c.what_ifs.set("memory", {16.0 * 1048576});
         if (!m.option_key.empty()) c.options.values[m.option_key] = m.option_value;
         p.points.push_back({key(m.name, s, n), c});

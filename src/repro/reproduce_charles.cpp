@@ -174,7 +174,7 @@ PaperPlan charles_plan(const ReproduceOptions& o) {
     for (const char* topo : {"cube", "ring"})
       for (int n : kCharlesNodes) {
         if (n == 1 && std::string(topo) == "ring") continue;
-        SimConfig cfg = repro_config("ipsc860", n, "elastic", path, c.size);
+        RunConfig cfg = repro_config("ipsc860", n, "elastic", path, c.size);
         cfg.topology = parse_topology(topo);
         p.points.push_back({el_key(c, topo, n), cfg});
       }

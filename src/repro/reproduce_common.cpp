@@ -7,9 +7,9 @@
 
 namespace zc {
 
-SimConfig repro_config(const std::string& machine, int nodes, const std::string& algorithm,
+RunConfig repro_config(const std::string& machine, int nodes, const std::string& algorithm,
                        const std::string& scene, int size) {
-  SimConfig c;
+  RunConfig c;
   c.machine = machine;
   c.nodes = nodes;
   c.algorithm = algorithm;

@@ -301,7 +301,7 @@ PaperPlan compositing_plan(const ReproduceOptions& o) {
   p.name = "compositing";
   const auto points = grid(o.full);
   for (const auto& pt : points) {
-    SimConfig c = repro_config(pt.machine, pt.nodes, "compositing-study",
+    RunConfig c = repro_config(pt.machine, pt.nodes, "compositing-study",
                                o.root + "/scenes/kurc/" + pt.scene + ".json", pt.size);
     c.topology = pt.topology;
     c.what_ifs.set("memory", {1024.0 * 1048576});

@@ -125,7 +125,7 @@ PaperPlan fidelity_plan(const ReproduceOptions& o) {
   p.name = "";
   for (const auto& r : kRuns)
     for (const char* f : kFidelities) {
-      SimConfig c = repro_config(r.machine, r.nodes, r.algorithm, o.root + "/" + r.scene, r.size);
+      RunConfig c = repro_config(r.machine, r.nodes, r.algorithm, o.root + "/" + r.scene, r.size);
       c.topology = parse_topology(r.topology);
       c.fidelity = parse_fidelity(f);
       if (r.memory_mib > 0) c.what_ifs.set("memory", {r.memory_mib * 1048576});

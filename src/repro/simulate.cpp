@@ -37,7 +37,7 @@ std::map<SceneKey, std::shared_ptr<const Scene>>& scene_cache() {
   return cache;
 }
 
-SceneKey scene_key(const SimConfig& c) {
+SceneKey scene_key(const RunConfig& c) {
   return {c.scene_path, c.width, c.height};
 }
 
@@ -47,7 +47,7 @@ constexpr std::size_t kCacheTriangles = 4'000'000;
 
 // Loads the scenes two or more points use and the cache lacks, `jobs` at a time. A scene that
 // fails to load is left to its simulations, which report the error as before.
-void preload_scenes(const std::vector<SimConfig>& points, int jobs) {
+void preload_scenes(const std::vector<RunConfig>& points, int jobs) {
   auto& cache = scene_cache();
   std::map<SceneKey, int> uses;
   for (const auto& p : points)
@@ -91,13 +91,13 @@ std::map<ReferenceKey, ReferenceFrame>& reference_cache() {
   return cache;
 }
 
-const Scene* cached_scene(const SimConfig& c) {
+const Scene* cached_scene(const RunConfig& c) {
   const auto& cache = scene_cache();
   const auto it = c.scene_path.empty() ? cache.end() : cache.find(scene_key(c));
   return it == cache.end() ? nullptr : it->second.get();
 }
 
-bool compares_image(const SimConfig& c) {
+bool compares_image(const RunConfig& c) {
   if (!c.compare_with_sequential || c.custom) return false;
   try {
     return find_algorithm(c.algorithm).draws_picture;
@@ -107,7 +107,7 @@ bool compares_image(const SimConfig& c) {
 }
 
 // Draws, `jobs` at a time, the references two or more points of a cached scene compare with.
-void prepare_references(const std::vector<SimConfig>& points, int jobs) {
+void prepare_references(const std::vector<RunConfig>& points, int jobs) {
   auto& refs = reference_cache();
   std::map<ReferenceKey, int> uses;
   for (const auto& p : points)
@@ -150,7 +150,7 @@ void prepare_references(const std::vector<SimConfig>& points, int jobs) {
 constexpr std::size_t kSetupCacheUses = 3;
 constexpr std::size_t kSetupCacheTriangles = 1'000'000;
 
-void prepare_setup_caches(const std::vector<SimConfig>& points) {
+void prepare_setup_caches(const std::vector<RunConfig>& points) {
   // ZCUBE_SETUP_CACHE=0: every node sets up its triangles itself (a check, and a baseline).
   if (const char* v = std::getenv("ZCUBE_SETUP_CACHE"); v && std::string(v) == "0") {
     drop_setup_caches([](const Scene&) { return false; });
@@ -191,7 +191,7 @@ void prepare_setup_caches(const std::vector<SimConfig>& points) {
 // The cached scenes no point of `points` uses, and the references drawn from them, dropped before
 // the batch forks: each fork copies the page tables of all the memory the parent holds (the
 // calibration's runs, on Kurc's pots alone, would otherwise each copy those of Blazek's spheres).
-void drop_unused_scenes(const std::vector<SimConfig>& points) {
+void drop_unused_scenes(const std::vector<RunConfig>& points) {
   std::set<SceneKey> used;
   for (const auto& p : points)
     used.insert(scene_key(p));
@@ -212,7 +212,7 @@ void drop_unused_scenes(const std::vector<SimConfig>& points) {
 // A point's host work, roughly: every node touches the picture and the triangles (a 1024-node
 // Kurc run costs 100 times a 16-node one, a Blazek run with half a million triangles more than a
 // Kurc run of the same nodes), twice under the flow model (SimGrid's bandwidth sharing).
-double estimated_cost(const SimConfig& c) {
+double estimated_cost(const RunConfig& c) {
   const Scene* s = cached_scene(c);
   const double triangles = s ? double(s->triangles.size()) : 0.0;
   const double pixels = c.width > 0 && c.height > 0 ? double(c.width) * double(c.height)
@@ -225,7 +225,7 @@ double estimated_cost(const SimConfig& c) {
 // The points' indices, longest first (stable): a batch ends on short runs, not on one long run
 // with the other jobs idle (longest-processing-time scheduling). Which process runs a point
 // changes nothing in its report.
-std::vector<std::size_t> longest_first(const std::vector<SimConfig>& points) {
+std::vector<std::size_t> longest_first(const std::vector<RunConfig>& points) {
   std::vector<double> cost;
   for (const auto& p : points)
     cost.push_back(estimated_cost(p));
@@ -254,7 +254,7 @@ void set_batch_simgrid_args(std::vector<std::string> args) {
   batch_simgrid_args() = std::move(args);
 }
 
-nlohmann::json program_inputs(const SimConfig& c) {
+nlohmann::json program_inputs(const RunConfig& c) {
   return {{"algorithm", c.algorithm},
           {"options", c.options.values},
           {"frames", c.options.frames},
@@ -269,8 +269,8 @@ nlohmann::json program_inputs(const SimConfig& c) {
 namespace {
 
 // The point with this process's batch SimGrid settings after its own.
-SimConfig with_batch_args(const SimConfig& cfg) {
-  SimConfig c = cfg;
+RunConfig with_batch_args(const RunConfig& cfg) {
+  RunConfig c = cfg;
   const auto& extra = batch_simgrid_args();
   c.simgrid_args.insert(c.simgrid_args.end(), extra.begin(), extra.end());
   return c;
@@ -278,14 +278,14 @@ SimConfig with_batch_args(const SimConfig& cfg) {
 
 // The node count and topology a platform file gives are checked by the replay. A point that draws
 // a timeline runs in full (its report is the full run's in any case).
-std::string replay_key(const SimConfig& c) {
+std::string replay_key(const RunConfig& c) {
   if (c.custom || c.timeline) return "";
   return program_inputs(c).dump();
 }
 
 // The point's bands (sim/bands.hpp) when it asks for them, from the trace its run recorded or
 // replayed.
-void attach_bands(const SimConfig& cfg, SimResult& r, const CallTrace* t, const PlatformModel& pm) {
+void attach_bands(const RunConfig& cfg, RunResult& r, const CallTrace* t, const PlatformModel& pm) {
   if (cfg.band_draws <= 0 || !r.ok) return;
   const BandsRequest req{.draws = cfg.band_draws, .seed = cfg.band_seed};
   if (t)
@@ -294,22 +294,22 @@ void attach_bands(const SimConfig& cfg, SimResult& r, const CallTrace* t, const 
     mark_unavailable(r.report, req, "the run read the clock: its calls may depend on the times");
 }
 
-nlohmann::json record_point(const SimConfig& cfg, std::vector<std::uint8_t>* trace) {
+nlohmann::json record_point(const RunConfig& cfg, std::vector<std::uint8_t>* trace) {
   if (!trace && cfg.band_draws <= 0) return simulate_point(cfg);
   std::shared_ptr<CallTrace> t;
   PlatformModel pm;
-  SimResult r = record_simulation(with_batch_args(cfg), cached_scene(cfg), t, &pm);
+  RunResult r = record_simulation(with_batch_args(cfg), cached_scene(cfg), t, &pm);
   if (t && trace) *trace = t->serialize();
   attach_bands(cfg, r, t.get(), pm);
   attach_paper_figures(r.report);
   return r.report;
 }
 
-std::optional<nlohmann::json> replay_point(const SimConfig& cfg,
+std::optional<nlohmann::json> replay_point(const RunConfig& cfg,
                                            const std::vector<std::uint8_t>& trace) {
   auto t = std::make_shared<const CallTrace>(CallTrace::parse(trace));
   PlatformModel pm;
-  std::optional<SimResult> r =
+  std::optional<RunResult> r =
       replay_simulation(with_batch_args(cfg), cached_scene(cfg), t, nullptr, &pm);
   if (!r) return std::nullopt;
   attach_bands(cfg, *r, t.get(), pm);
@@ -324,7 +324,7 @@ bool replay_enabled() {
 }
 
 std::vector<nlohmann::json>
-replaying_batch(const std::vector<SimConfig>& points, int jobs,
+replaying_batch(const std::vector<RunConfig>& points, int jobs,
                 const std::function<void(const BatchProgress&)>& progress, bool keep) {
   static TraceStore traces; // the kept ones
   std::map<std::string, int> uses;
@@ -332,7 +332,7 @@ replaying_batch(const std::vector<SimConfig>& points, int jobs,
     ++uses[replay_key(p)];
   // A recording nobody replays costs its trace: only the keys two points share record, unless
   // the traces are kept for later batches.
-  const auto key = [&uses, keep](const SimConfig& c) {
+  const auto key = [&uses, keep](const RunConfig& c) {
     std::string k = replay_key(c);
     return keep || traces.contains(k) || uses[k] >= 2 ? k : std::string();
   };
@@ -357,7 +357,7 @@ namespace {
 // Each platform file the points name checked once here, before the batch forks: the forked
 // simulations find its text checked and skip the checks. A file that fails is left to its
 // simulations, which report the error as before.
-void check_platform_files(const std::vector<SimConfig>& points) {
+void check_platform_files(const std::vector<RunConfig>& points) {
   std::set<std::string> done;
   for (const auto& p : points) {
     if (!is_platform_file(p.machine) || !done.insert(p.machine).second) continue;
@@ -370,15 +370,15 @@ void check_platform_files(const std::vector<SimConfig>& points) {
 
 } // namespace
 
-nlohmann::json simulate_point(const SimConfig& cfg) {
+nlohmann::json simulate_point(const RunConfig& cfg) {
   if (cfg.band_draws > 0) return record_point(cfg, nullptr);
-  SimResult r = run_simulation(with_batch_args(cfg), cached_scene(cfg));
+  RunResult r = run_simulation(with_batch_args(cfg), cached_scene(cfg));
   attach_paper_figures(r.report);
   return r.report;
 }
 
 std::vector<nlohmann::json>
-simulate_batch(const std::vector<SimConfig>& points, int jobs,
+simulate_batch(const std::vector<RunConfig>& points, int jobs,
                const std::function<void(const BatchProgress&)>& progress, bool keep_traces) {
   drop_unused_scenes(points);
   preload_scenes(points, jobs);
@@ -386,7 +386,7 @@ simulate_batch(const std::vector<SimConfig>& points, int jobs,
   check_platform_files(points);
   prepare_setup_caches(points);
   const std::vector<std::size_t> order = longest_first(points);
-  std::vector<SimConfig> sorted;
+  std::vector<RunConfig> sorted;
   for (const std::size_t i : order)
     sorted.push_back(points[i]);
   // The parent's free heap handed back: each fork then copies fewer page-table entries, and a

@@ -20,17 +20,17 @@ void set_batch_simgrid_args(std::vector<std::string> args);
 // What a node program's calls depend on (run/call_trace.hpp), as JSON: the algorithm, its options
 // and frames, the scene, the size, the node count, the topology and the image comparison; not the
 // machine, its what-ifs or the fidelity. A point's whole key adds those (reproduce's config_key).
-nlohmann::json program_inputs(const SimConfig& c);
+nlohmann::json program_inputs(const RunConfig& c);
 
 // One simulation's report, paper figures attached: the point runner of zcube's batches.
-nlohmann::json simulate_point(const SimConfig& cfg);
+nlohmann::json simulate_point(const RunConfig& cfg);
 
 // run_batch with simulate_point, recording and replaying (docs/architecture.md, "Record and
 // replay") the points that differ only in their machine. `keep_traces`: the recordings are kept
 // for the process's later batches (the calibration's steps), and every point records; otherwise
 // only the points another of the batch can replay record.
 std::vector<nlohmann::json>
-simulate_batch(const std::vector<SimConfig>& points, int jobs,
+simulate_batch(const std::vector<RunConfig>& points, int jobs,
                const std::function<void(const BatchProgress&)>& progress = {},
                bool keep_traces = false);
 

@@ -64,7 +64,7 @@ SweepPoint make_point(std::map<std::string, std::string> values, const std::stri
 
 std::vector<nlohmann::json> run_points(const std::vector<SweepPoint>& points,
                                        const BatchRunner& runner) {
-  std::vector<SimConfig> cfgs;
+  std::vector<RunConfig> cfgs;
   for (const auto& p : points)
     if (p.config) cfgs.push_back(*p.config);
   const auto ran = runner(cfgs);

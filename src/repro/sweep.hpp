@@ -29,7 +29,7 @@ using Locate = std::function<std::string(const std::string&)>;
 
 struct SweepPoint {
   std::map<std::string, std::string> values; // flag -> value, for every axis
-  std::optional<SimConfig> config;           // empty when the flags are invalid
+  std::optional<RunConfig> config;           // empty when the flags are invalid
   std::string error;                         // why not
 };
 
@@ -44,7 +44,7 @@ std::vector<SweepPoint> expand_sweep(const std::vector<SweepAxis>& axes, const s
 // Runs the points that have a configuration through `runner` (a local or a sharded batch) and
 // returns one report per point, an invalid point's being {"status": "error", "error": reason}.
 // Empty when the runner returns nothing (the other ranks of a sharded batch).
-using BatchRunner = std::function<std::vector<nlohmann::json>(const std::vector<SimConfig>&)>;
+using BatchRunner = std::function<std::vector<nlohmann::json>(const std::vector<RunConfig>&)>;
 std::vector<nlohmann::json> run_points(const std::vector<SweepPoint>& points,
                                        const BatchRunner& runner);
 

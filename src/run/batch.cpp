@@ -242,7 +242,7 @@ void run_jobs(int jobs, const NextJob& next, const JobDone& done) {
 
 } // namespace
 
-std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int jobs,
+std::vector<nlohmann::json> run_batch(const std::vector<RunConfig>& points, int jobs,
                                       const PointRunner& run_point,
                                       const std::function<void(const BatchProgress&)>& progress) {
   PackedReports reports(points.size());
@@ -251,7 +251,7 @@ std::vector<nlohmann::json> run_batch(const std::vector<SimConfig>& points, int 
   std::size_t next = 0;
   const NextJob next_job = [&]() -> std::optional<Job> {
     if (next == points.size()) return std::nullopt;
-    const SimConfig& cfg = points[next];
+    const RunConfig& cfg = points[next];
     return Job{next++, [&run_point, &cfg] { return report_frame([&] { return run_point(cfg); }); }};
   };
   run_jobs(jobs, next_job, [&](Child& c) {
@@ -273,7 +273,7 @@ constexpr const char* kDiverged = "zcube_replay_diverged";
 // recorded, and what the finished children sent back.
 class ReplaySchedule {
 public:
-  ReplaySchedule(const std::vector<SimConfig>& points, const ReplayRunner& runner,
+  ReplaySchedule(const std::vector<RunConfig>& points, const ReplayRunner& runner,
                  TraceStore& traces)
       : points_(points), runner_(runner), traces_(traces) {
     for (std::size_t i = 0; i < points.size(); ++i) {
@@ -333,7 +333,7 @@ public:
 
 private:
   Job job(std::size_t i, Mode m) {
-    const SimConfig& cfg = points_[i];
+    const RunConfig& cfg = points_[i];
     const ReplayRunner& r = runner_;
     if (m == kRecord)
       return {i,
@@ -355,7 +355,7 @@ private:
     return {i, [&r, &cfg] { return report_frame([&] { return r.record(cfg, nullptr); }); }, m};
   }
 
-  const std::vector<SimConfig>& points_;
+  const std::vector<RunConfig>& points_;
   const ReplayRunner& runner_;
   TraceStore& traces_;
   std::vector<std::string> keys_;
@@ -366,7 +366,7 @@ private:
 } // namespace
 
 std::vector<nlohmann::json>
-run_batch_replaying(const std::vector<SimConfig>& points, int jobs, const ReplayRunner& runner,
+run_batch_replaying(const std::vector<RunConfig>& points, int jobs, const ReplayRunner& runner,
                     TraceStore& traces, const std::function<void(const BatchProgress&)>& progress,
                     ReplayCounts* counts) {
   PackedReports reports(points.size());

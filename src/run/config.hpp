@@ -18,7 +18,7 @@
 
 namespace zc {
 
-struct SimConfig {
+struct RunConfig {
   std::string machine = "ipsc2"; // built-in name or path to a platform XML
   int nodes = 1;
   Topology topology = Topology::Cube;
@@ -44,7 +44,7 @@ struct SimConfig {
   std::shared_ptr<const UncertaintySpec> band_spec;
 };
 
-struct SimResult {
+struct RunResult {
   nlohmann::json report;
   std::vector<Framebuffer> images; // one per frame (node-delivered)
   bool ok = true;                  // false: the run failed (e.g. out of node memory)

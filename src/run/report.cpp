@@ -75,7 +75,7 @@ void from_json(const nlohmann::json& j, NodeRecord& r) {
                     : nullptr;
 }
 
-void add_run_header(nlohmann::json& j, const RunHeader& h, const SimConfig& cfg,
+void add_run_header(nlohmann::json& j, const RunHeader& h, const RunConfig& cfg,
                     const std::string& algorithm, const Scene& scene) {
   j["machine"] = h.machine;
   j["platform"] = h.platform;
@@ -223,7 +223,7 @@ ReferenceFrame reference_frame(const Scene& scene, int frame, int frames) {
 }
 
 void add_image_section(nlohmann::json& j, std::vector<FrameImage>& images, const Scene& scene,
-                       const SimConfig& cfg, bool ok, std::vector<Framebuffer>& out) {
+                       const RunConfig& cfg, bool ok, std::vector<Framebuffer>& out) {
   // Rows delivered straight to the output device: pasted into one picture per frame.
   {
     std::map<int, Framebuffer> composed;

@@ -91,7 +91,7 @@ struct RunHeader {
   std::string machine, platform, topology, fidelity, scene_path;
   int nodes = 0;
 };
-void add_run_header(nlohmann::json& j, const RunHeader& h, const SimConfig& cfg,
+void add_run_header(nlohmann::json& j, const RunHeader& h, const RunConfig& cfg,
                     const std::string& algorithm, const Scene& scene);
 
 // "phases", "per_node", "communication", "counters", "load_imbalance" and the algorithm's metrics
@@ -116,7 +116,7 @@ void set_reference_lookup(ReferenceLookup lookup);
 // "image": rows pasted into frames, hashes, and the comparison with the sequential renderer
 // (when cfg.compare_with_sequential). The frames are moved to `out` in frame order.
 void add_image_section(nlohmann::json& j, std::vector<FrameImage>& images, const Scene& scene,
-                       const SimConfig& cfg, bool ok, std::vector<Framebuffer>& out);
+                       const RunConfig& cfg, bool ok, std::vector<Framebuffer>& out);
 
 // The host process's peak resident set (the report's host.peak_rss_bytes).
 std::size_t peak_rss_bytes();

@@ -82,7 +82,7 @@ int parse_int(const std::string& s, const std::string& flag) {
 
 // The run flags proper (machine .. frames) into c; the what-ifs and options are applied after.
 void apply_run_flags(const std::map<std::string, std::string>& v, const std::string& scene,
-                     SimConfig& c) {
+                     RunConfig& c) {
   auto get = [&](const std::string& k) { // the value given, else the table's default
     auto it = v.find(k);
     return it == v.end() ? find_run_flag(k)->default_text : it->second;
@@ -116,7 +116,7 @@ void apply_run_flags(const std::map<std::string, std::string>& v, const std::str
 // The what-ifs, each parsed by its descriptor; on a built-in machine they are also applied to its
 // figures, so a factor that takes a figure out of bounds (or a --per-hop on a store-and-forward
 // machine) fails before any run. A platform file's figures are checked when it is loaded.
-WhatIfs what_ifs_of(const std::map<std::string, std::string>& v, const SimConfig& c) {
+WhatIfs what_ifs_of(const std::map<std::string, std::string>& v, const RunConfig& c) {
   WhatIfs w;
   for (const auto& spec : what_if_specs())
     if (v.count(spec.flag)) w.set(spec.flag, parse_what_if(spec, v.at(spec.flag)));
@@ -150,8 +150,8 @@ const std::vector<std::string>& run_flag_names() {
   return names;
 }
 
-SimConfig config_from_flags(const std::map<std::string, std::string>& v, const std::string& scene) {
-  SimConfig c;
+RunConfig config_from_flags(const std::map<std::string, std::string>& v, const std::string& scene) {
+  RunConfig c;
   apply_run_flags(v, scene, c);
   c.what_ifs = what_ifs_of(v, c);
   for (const auto& [s, algos] : run_option_specs())

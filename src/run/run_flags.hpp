@@ -4,7 +4,7 @@
 // options (algo/algorithm.hpp: OptionSpec), each declared once with its value form, default and
 // help. `zcube run`'s and `zcube pingpong`'s options, `zcube sweep`'s list-valued flags and
 // columns, `zcube regress --set`, the help and the docs' flag table (`zcube help flags`) are made
-// from it, and config_from_flags is the one place the text becomes a SimConfig.
+// from it, and config_from_flags is the one place the text becomes a RunConfig.
 #include <map>
 #include <string>
 #include <vector>
@@ -37,7 +37,7 @@ const std::vector<std::string>& run_flag_names();
 // a platform .xml's own count, cube, circuit, sequential, `scene`). UsageError/InputError name the
 // flag at fault; an algorithm option the algorithm does not take is an error. A built-in machine's
 // what-ifs are applied to its figures here, so a factor that takes one out of bounds fails here.
-SimConfig config_from_flags(const std::map<std::string, std::string>& flags,
+RunConfig config_from_flags(const std::map<std::string, std::string>& flags,
                             const std::string& scene);
 
 // The flags as a Markdown table (docs/user-guide.md holds it; a test keeps the two equal).

@@ -60,7 +60,7 @@ double disagreement(const Figures& a, const Figures& b) {
   return d;
 }
 
-RetimeMachine retime_machine(const PlatformModel& pm, const SimConfig& cfg) {
+RetimeMachine retime_machine(const PlatformModel& pm, const RunConfig& cfg) {
   RetimeMachine m;
   m.nodes = pm.nodes;
   m.topology = pm.topology;
@@ -125,7 +125,7 @@ void write_bands(nlohmann::json& report, const std::vector<Figures>& draws, nloh
   report["bands"] = std::move(b);
 }
 
-nlohmann::json band_header(const SimConfig& cfg, const BandsRequest& req,
+nlohmann::json band_header(const RunConfig& cfg, const BandsRequest& req,
                            const std::string& machine, const char* method) {
   return {{"draws", req.draws},
           {"seed", req.seed},
@@ -165,7 +165,7 @@ void mark_unavailable(nlohmann::json& report, const BandsRequest& req, const std
 }
 
 std::string add_bands(nlohmann::json& report, const CallTrace& trace, const PlatformModel& pm,
-                      const SimConfig& cfg, const BandsRequest& req) {
+                      const RunConfig& cfg, const BandsRequest& req) {
   const RetimeMachine m = retime_machine(pm, cfg);
   std::string why = retimable(m);
   // The retimer must give the simulated run's own figures before it prices anything else.
@@ -203,7 +203,7 @@ namespace {
 
 // Why a run of cfg cannot be retimed, as far as the configuration says before it runs ("" when
 // it can; a platform file's links are known only once it is loaded).
-std::string not_retimable(const SimConfig& cfg) {
+std::string not_retimable(const RunConfig& cfg) {
   NetworkParams n;
   if (!is_platform_file(cfg.machine)) {
     MachineFigures f = machine_figures(machine_spec(cfg.machine), cfg.nodes);
@@ -214,24 +214,24 @@ std::string not_retimable(const SimConfig& cfg) {
 }
 
 // Every draw a simulation of its own, in child processes: the first records, the others replay.
-std::vector<Figures> simulated_draws(const SimConfig& cfg, const BandsRequest& req,
+std::vector<Figures> simulated_draws(const RunConfig& cfg, const BandsRequest& req,
                                      const std::string& machine) {
-  std::vector<SimConfig> points;
+  std::vector<RunConfig> points;
   for (const ModelDraw& d : model_draws(machine, req.draws, req.seed)) {
-    SimConfig c = cfg;
+    RunConfig c = cfg;
     c.draw = std::make_shared<const ModelDraw>(d);
     c.compare_with_sequential = false;
     c.timeline = false;
     points.push_back(std::move(c));
   }
-  ReplayRunner runner{[](const SimConfig&) { return std::string("draws"); },
-                      [](const SimConfig& c, std::vector<std::uint8_t>* trace) {
+  ReplayRunner runner{[](const RunConfig&) { return std::string("draws"); },
+                      [](const RunConfig& c, std::vector<std::uint8_t>* trace) {
                         std::shared_ptr<CallTrace> t;
-                        SimResult r = record_simulation(c, nullptr, t);
+                        RunResult r = record_simulation(c, nullptr, t);
                         if (t && trace) *trace = t->serialize();
                         return r.report;
                       },
-                      [](const SimConfig& c,
+                      [](const RunConfig& c,
                          const std::vector<std::uint8_t>& bytes) -> std::optional<nlohmann::json> {
                         auto t = std::make_shared<const CallTrace>(CallTrace::parse(bytes));
                         auto r = replay_simulation(c, nullptr, t);
@@ -247,7 +247,7 @@ std::vector<Figures> simulated_draws(const SimConfig& cfg, const BandsRequest& r
 
 } // namespace
 
-SimResult run_with_bands(const SimConfig& cfg, const BandsRequest& req, const Scene* preloaded) {
+RunResult run_with_bands(const RunConfig& cfg, const BandsRequest& req, const Scene* preloaded) {
   // Draws that need simulations of their own run before this process has an engine.
   const std::string simulated_why = not_retimable(cfg);
   std::vector<Figures> simulated;
@@ -255,7 +255,7 @@ SimResult run_with_bands(const SimConfig& cfg, const BandsRequest& req, const Sc
     simulated = simulated_draws(cfg, req, is_platform_file(cfg.machine) ? "" : cfg.machine);
   std::shared_ptr<CallTrace> trace;
   PlatformModel pm;
-  SimResult r = record_simulation(cfg, preloaded, trace, &pm);
+  RunResult r = record_simulation(cfg, preloaded, trace, &pm);
   if (!r.ok) return r;
   if (!simulated_why.empty() && req.draws > 0) {
     nlohmann::json b = band_header(cfg, req, pm.machine, "simulated");

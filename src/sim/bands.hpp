@@ -29,10 +29,10 @@ void mark_unavailable(nlohmann::json& report, const BandsRequest& req, const std
 // retimer does not cover, or a retimer that disagrees with the run), marks them unavailable and
 // returns why ("" when it did).
 std::string add_bands(nlohmann::json& report, const CallTrace& trace, const PlatformModel& pm,
-                      const SimConfig& cfg, const BandsRequest& req);
+                      const RunConfig& cfg, const BandsRequest& req);
 
 // Like run_simulation, once per process; the draws that need a simulation of their own fork.
-SimResult run_with_bands(const SimConfig& cfg, const BandsRequest& req,
+RunResult run_with_bands(const RunConfig& cfg, const BandsRequest& req,
                          const Scene* preloaded = nullptr);
 
 } // namespace zc

@@ -188,13 +188,13 @@ Algorithm replaying_algorithm(const Algorithm& a, const std::shared_ptr<const Ca
 
 } // namespace
 
-SimResult record_simulation(const SimConfig& cfg, const Scene* preloaded,
+RunResult record_simulation(const RunConfig& cfg, const Scene* preloaded,
                             std::shared_ptr<CallTrace>& trace, PlatformModel* model) {
   trace = std::make_shared<CallTrace>();
-  SimConfig c = cfg;
+  RunConfig c = cfg;
   c.custom = std::make_shared<const Algorithm>(
       recording_algorithm(cfg.custom ? *cfg.custom : find_algorithm(cfg.algorithm), trace));
-  SimResult r = run_simulation(c, preloaded, model);
+  RunResult r = run_simulation(c, preloaded, model);
   if (!r.ok || trace->read_clock)
     trace = nullptr;
   else
@@ -202,14 +202,14 @@ SimResult record_simulation(const SimConfig& cfg, const Scene* preloaded,
   return r;
 }
 
-std::optional<SimResult> replay_simulation(const SimConfig& cfg, const Scene* preloaded,
+std::optional<RunResult> replay_simulation(const RunConfig& cfg, const Scene* preloaded,
                                            std::shared_ptr<const CallTrace> trace, std::string* why,
                                            PlatformModel* model) {
   divergence().clear();
-  SimConfig c = cfg;
+  RunConfig c = cfg;
   c.custom = std::make_shared<const Algorithm>(
       replaying_algorithm(cfg.custom ? *cfg.custom : find_algorithm(cfg.algorithm), trace));
-  SimResult r = run_simulation(c, preloaded, model);
+  RunResult r = run_simulation(c, preloaded, model);
   if (!divergence().empty()) {
     if (why) *why = divergence();
     return std::nullopt;

@@ -20,14 +20,14 @@ struct PlatformModel;
 // A full run (run_simulation) that records its calls into `trace`; `trace` is reset when the run
 // cannot be replayed (it failed, or a node read the clock).
 // `model`, when given, receives the machine the run was priced on.
-SimResult record_simulation(const SimConfig& cfg, const Scene* preloaded,
+RunResult record_simulation(const RunConfig& cfg, const Scene* preloaded,
                             std::shared_ptr<CallTrace>& trace, PlatformModel* model = nullptr);
 
 // The result of `cfg` by replaying `trace` (recorded from a run of the same algorithm, options,
 // scene, size, frames, node count and topology); nullopt, and `why`, when the replay diverged.
 // Like run_simulation, once per process. The images are not made: the image section is the
 // recorded run's.
-std::optional<SimResult> replay_simulation(const SimConfig& cfg, const Scene* preloaded,
+std::optional<RunResult> replay_simulation(const RunConfig& cfg, const Scene* preloaded,
                                            std::shared_ptr<const CallTrace> trace,
                                            std::string* why = nullptr,
                                            PlatformModel* model = nullptr);

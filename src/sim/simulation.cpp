@@ -97,7 +97,7 @@ struct PreparedRun {
   const Scene* scene = nullptr;
 };
 
-PreparedRun prepare_run(const SimConfig& cfg, const Scene* preloaded) {
+PreparedRun prepare_run(const RunConfig& cfg, const Scene* preloaded) {
   PreparedRun p;
   p.algo = cfg.custom ? cfg.custom.get() : &find_algorithm(cfg.algorithm);
   p.options = cfg.options;
@@ -125,7 +125,7 @@ struct PlatformSource {
   std::vector<std::string> file_settings; // the file's <config>, checked as --cfg is
 };
 
-PlatformSource platform_source(const SimConfig& cfg) {
+PlatformSource platform_source(const RunConfig& cfg) {
   PlatformSource src;
   src.is_file = is_platform_file(cfg.machine);
   if (src.is_file) {
@@ -147,7 +147,7 @@ PlatformSource platform_source(const SimConfig& cfg) {
 
 // SimGrid's arguments: zcube's settings, then the platform file's <config>, then the user's --cfg
 // and --log (so they win).
-std::vector<std::string> engine_args(const SimConfig& cfg, const PlatformSource& src) {
+std::vector<std::string> engine_args(const RunConfig& cfg, const PlatformSource& src) {
   std::vector<std::string> args = {"zcube",
                                    "--log=root.thres:critical",
                                    "--cfg=network/model:CM02",
@@ -171,7 +171,7 @@ std::vector<std::string> engine_args(const SimConfig& cfg, const PlatformSource&
 
 // The platform loaded into `e`, read back as a model, with the run's what-ifs and its draw of
 // the uncertainty model applied.
-PlatformModel load_machine(sg::Engine& e, const SimConfig& cfg, const PlatformSource& src) {
+PlatformModel load_machine(sg::Engine& e, const RunConfig& cfg, const PlatformSource& src) {
   if (src.is_file)
     load_platform_file(e, cfg.machine);
   else
@@ -235,7 +235,7 @@ RankOutcome run_ranks(sg::Engine& e, const Algorithm& algo, const PlatformModel&
 // Why a run that ended at `vtime` has no times to report, beyond its ranks' own failures: a rank
 // still waiting for a message nobody sends, or a clock past what it resolves.
 std::string failure_after_run(const RankOutcome& o, const Algorithm& algo, int P, double vtime,
-                              const SimConfig& cfg) {
+                              const RunConfig& cfg) {
   for (int r = 0; r <= P; ++r)
     if (!o.finished[r] && (r < P || algo.uses_host))
       return (r < P ? "node " + std::to_string(r) : std::string("host computer")) +
@@ -269,7 +269,7 @@ void add_model_section(nlohmann::json& j, const PlatformModel& pm, const WhatIfs
 
 } // namespace
 
-SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformModel* model) {
+RunResult run_simulation(const RunConfig& cfg, const Scene* preloaded, PlatformModel* model) {
   const auto wall0 = std::chrono::steady_clock::now();
   PreparedRun run = prepare_run(cfg, preloaded);
   const Algorithm& algo = *run.algo;
@@ -317,7 +317,7 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
   const std::string failure =
       ranks.failure.empty() ? failure_after_run(ranks, algo, P, vtime, cfg) : ranks.failure;
 
-  SimResult res;
+  RunResult res;
   res.ok = failure.empty();
   res.error = failure;
   nlohmann::json& j = res.report;
@@ -344,8 +344,8 @@ SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded, PlatformM
   return res;
 }
 
-nlohmann::json run_simulation_isolated(const SimConfig& cfg) {
-  return run_batch({cfg}, 1, [](const SimConfig& c) { return run_simulation(c).report; }).front();
+nlohmann::json run_simulation_isolated(const RunConfig& cfg) {
+  return run_batch({cfg}, 1, [](const RunConfig& c) { return run_simulation(c).report; }).front();
 }
 
 } // namespace zc

@@ -16,10 +16,10 @@ namespace zc {
 
 struct PlatformModel;
 // `model`, when given, receives the machine the run was priced on (what-ifs and draw applied).
-SimResult run_simulation(const SimConfig& cfg, const Scene* preloaded = nullptr,
+RunResult run_simulation(const RunConfig& cfg, const Scene* preloaded = nullptr,
                          PlatformModel* model = nullptr);
 
 // Runs in a forked child (fresh SimGrid engine) and returns its report; images are not returned.
-nlohmann::json run_simulation_isolated(const SimConfig& cfg);
+nlohmann::json run_simulation_isolated(const RunConfig& cfg);
 
 } // namespace zc

@@ -15,8 +15,8 @@ using namespace zc::test;
 
 namespace {
 
-SimConfig four_nodes(const std::string& algorithm) {
-  SimConfig c = sim_config("ipsc2", 4, Topology::Cube, Fidelity::Circuit);
+RunConfig four_nodes(const std::string& algorithm) {
+  RunConfig c = sim_config("ipsc2", 4, Topology::Cube, Fidelity::Circuit);
   c.algorithm = algorithm;
   c.width = 24;
   c.height = 20; // not a multiple of 4: partial strips and bands
@@ -36,7 +36,7 @@ TEST(EveryAlgorithm, FourNodesRunAndMatchTheSequentialImage) {
   ASSERT_GE(algorithms().size(), 16u);
   for (const Algorithm& a : algorithms()) {
     SCOPED_TRACE(a.name);
-    SimConfig c = four_nodes(a.name);
+    RunConfig c = four_nodes(a.name);
     if (a.name == "pingpong") c.options.values = {{"sizes", "16B,1KiB"}, {"from", "0"}};
     const auto r = run_simulation_isolated(c);
     ASSERT_EQ(r.value("status", ""), "ok") << r.dump().substr(0, 600);
@@ -58,12 +58,12 @@ TEST(EveryAlgorithm, FailedRunsEndCleanly) {
   for (const auto& [name, memory] : {std::pair{"elastic", 1.0e6}, std::pair{"zbuf-exc", 1.5e6},
                                      std::pair{"host-initiated", 0.53e6}}) {
     SCOPED_TRACE(name);
-    SimConfig c = four_nodes(name);
+    RunConfig c = four_nodes(name);
     c.what_ifs.set("memory", {memory});
     const auto r = run_simulation_isolated(c);
     EXPECT_EQ(r.value("status", ""), "out_of_memory") << r.dump().substr(0, 600);
   }
-  SimConfig c = four_nodes("sequential");
+  RunConfig c = four_nodes("sequential");
   c.compare_with_sequential = false;
   const auto r = run_custom(c, [](NodeContext& ctx) {
     if (ctx.rank() == 1) ctx.comm().recv(2, 9);

@@ -22,7 +22,7 @@ TEST(ManyNodes, EveryAlgorithmGivesTheSequentialImageOn64And128Nodes) {
   for (int P : {64, 128})
     for (const Algorithm& a : algorithms()) {
       if (!a.draws_picture) continue; // pingpong, comm-check, the compositing study
-      SimConfig c = sim_config("ipsc860", P, Topology::Cube, Fidelity::Circuit);
+      RunConfig c = sim_config("ipsc860", P, Topology::Cube, Fidelity::Circuit);
       c.algorithm = a.name;
       c.scene_path = paper_scene(a);
       c.width = c.height = 160; // partial strips: 2.5 and 1.25 rows a node
@@ -36,7 +36,7 @@ TEST(ManyNodes, EveryAlgorithmGivesTheSequentialImageOn64And128Nodes) {
 }
 
 TEST(ManyNodes, CommCheckPassesOn1024Nodes) {
-  SimConfig c = sim_config("ipsc860", 1024, Topology::Cube, Fidelity::Analytic);
+  RunConfig c = sim_config("ipsc860", 1024, Topology::Cube, Fidelity::Analytic);
   c.algorithm = "comm-check";
   const auto r = run_simulation_isolated(c);
   ASSERT_EQ(r["status"], "ok") << r.dump().substr(0, 400);

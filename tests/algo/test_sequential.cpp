@@ -14,7 +14,7 @@ using namespace zc::test;
 
 TEST(Sequential, VirtualTimeIsCountsTimesCosts) {
   for (const std::string m : {"ipsc2", "ipsc860"}) {
-    SimConfig c = sim_config(m, 1, Topology::Cube, Fidelity::Circuit);
+    RunConfig c = sim_config(m, 1, Topology::Cube, Fidelity::Circuit);
     c.algorithm = "sequential";
     c.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/teapot.json";
     c.compare_with_sequential = true;

@@ -30,7 +30,7 @@ namespace {
 
 // The comm-check algorithm (algo/tools/comm_check: the same self-test runs under MPI, tests/mpi) on
 // a simulated machine.
-void expect_all_good(SimConfig c, int P) {
+void expect_all_good(RunConfig c, int P) {
   c.algorithm = "comm-check";
   const auto rep = run_simulation_isolated(c);
   ASSERT_EQ(rep["status"], "ok") << rep.dump();

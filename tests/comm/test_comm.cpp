@@ -25,7 +25,7 @@ using namespace zc;
 using namespace zc::test;
 
 TEST(Comm, FifoPerSourceAndTagAnySourceAndTheHostAsARank) {
-  SimConfig c = sim_config("ipsc2", 8, Topology::Cube, Fidelity::Flow);
+  RunConfig c = sim_config("ipsc2", 8, Topology::Cube, Fidelity::Flow);
   auto a = std::make_shared<Algorithm>();
   a->name = "test";
   a->uses_host = true;
@@ -89,7 +89,7 @@ TEST(Comm, FifoPerSourceAndTagAnySourceAndTheHostAsARank) {
     EXPECT_EQ(n["metrics"]["bad"], 0) << n.dump();
 
   // Host link, then the e-cube path from node 0, under analytic: closed form.
-  SimConfig h = sim_config("ipsc860", 8, Topology::Cube, Fidelity::Analytic);
+  RunConfig h = sim_config("ipsc860", 8, Topology::Cube, Fidelity::Analytic);
   auto ha = std::make_shared<Algorithm>();
   ha->name = "test";
   ha->uses_host = true;

@@ -17,7 +17,7 @@ TEST(GroupComm, DigitGroupsOfMixedRadix) {
 
 TEST(GroupComm, CollectivesWithinEachGroupSeeOnlyTheGroup) {
   for (auto [P, topo] : {std::pair{12, Topology::Ring}, std::pair{16, Topology::Cube}}) {
-    SimConfig c = sim_config("ipsc2", P, topo, Fidelity::Circuit);
+    RunConfig c = sim_config("ipsc2", P, topo, Fidelity::Circuit);
     const std::vector<int> factors = P == 12 ? std::vector<int>{4, 3} : std::vector<int>{4, 4};
     auto r = run_custom(c, [&](NodeContext& ctx) {
       for (int digit = 0; digit < 2; ++digit) {

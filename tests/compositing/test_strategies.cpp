@@ -25,7 +25,7 @@ std::vector<const Algorithm*> sort_last_algorithms() {
 nlohmann::json run(const Algorithm& a, const std::string& picture, int P, int size,
                    const std::string& radix = "", bool compare = true) {
   const bool cube = (P & (P - 1)) == 0;
-  SimConfig c = sim_config("ipsc2", P, cube ? Topology::Cube : Topology::Ring, Fidelity::Circuit);
+  RunConfig c = sim_config("ipsc2", P, cube ? Topology::Cube : Topology::Ring, Fidelity::Circuit);
   c.algorithm = a.name;
   c.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/kurc/2pot.json";
   c.width = size;
@@ -103,7 +103,7 @@ TEST(Compositing, RadixRounds) {
 }
 
 TEST(Compositing, TheStudyTimesEveryContenderFromOneRendering) {
-  SimConfig c = sim_config("ipsc2", 16, Topology::Cube, Fidelity::Circuit);
+  RunConfig c = sim_config("ipsc2", 16, Topology::Cube, Fidelity::Circuit);
   c.algorithm = "compositing-study";
   c.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/kurc/2pot.json";
   c.width = c.height = 96;

@@ -19,7 +19,7 @@ using test::kRoot;
 
 nlohmann::json run(const std::string& machine, int nodes, const std::string& algorithm,
                    const std::string& scene, int size, Topology topo = Topology::Cube) {
-  SimConfig c;
+  RunConfig c;
   c.machine = machine;
   c.nodes = nodes;
   c.topology = topo;
@@ -173,7 +173,7 @@ struct BlazekRuns {
       std::map<std::string, double>& t = x.t;
       for (const char* m :
            {"node-initiated", "host-broadcast", "object-forwarding", "host-initiated"}) {
-        SimConfig c;
+        RunConfig c;
         c.machine = "ipsc2";
         c.nodes = 32;
         c.algorithm = m;

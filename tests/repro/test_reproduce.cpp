@@ -69,9 +69,9 @@ TEST(Reproduce, CommittedResultsAreCurrentForASubset) {
     for (const auto& pt : p.points)
       if (pt.key == key) return pt.cfg;
     ADD_FAILURE() << "no point " << key;
-    return SimConfig{};
+    return RunConfig{};
   };
-  const std::vector<SimConfig> cfgs = {
+  const std::vector<RunConfig> cfgs = {
       pick(kurc, "t2/16/1pot/pair-rs"), pick(charles, "el/teapot/256/cube/4"),
       pick(charles, "seq/teapot/256"), pick(blazek, "node-initiated/4/4")};
   const auto r = simulate_batch(cfgs, 2);

@@ -23,7 +23,7 @@ TEST(ReproduceCompositing, CommittedTablesAreCurrentAtEightNodes) {
   ReproduceOptions o;
   o.root = kRoot;
   const PaperPlan p = compositing_plan(o);
-  SimConfig cfg;
+  RunConfig cfg;
   for (const auto& pt : p.points)
     if (pt.key == "2pot/ipsc2/cube/400/8") cfg = pt.cfg;
   ASSERT_EQ(cfg.nodes, 8);

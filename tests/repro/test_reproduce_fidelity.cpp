@@ -74,7 +74,7 @@ TEST(ReproduceFidelity, CommittedCostIsCurrentAndTheSameTwice) {
   ReproduceOptions o;
   o.root = kRoot;
   const std::string run = "elastic-teapot-ipsc860-16";
-  std::vector<SimConfig> cfgs;
+  std::vector<RunConfig> cfgs;
   std::vector<std::string> fidelities;
   for (const auto& pt : fidelity_plan(o).points)
     if (pt.key.starts_with(run + "/")) {

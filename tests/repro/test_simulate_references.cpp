@@ -10,8 +10,8 @@ using namespace zc;
 
 namespace {
 
-SimConfig point(const std::string& algorithm, int nodes) {
-  SimConfig c;
+RunConfig point(const std::string& algorithm, int nodes) {
+  RunConfig c;
   c.machine = "ipsc860";
   c.nodes = nodes;
   c.algorithm = algorithm;
@@ -24,7 +24,7 @@ SimConfig point(const std::string& algorithm, int nodes) {
 
 // The batch's image sections equal those of simulations that draw their own reference.
 TEST(SimulateReferences, BatchComparesAsEachSimulationAlone) {
-  const std::vector<SimConfig> pts = {point("elastic", 4), point("elastic", 8),
+  const std::vector<RunConfig> pts = {point("elastic", 4), point("elastic", 8),
                                       point("sequential", 1)};
   const auto reps = simulate_batch(pts, 2);
   ASSERT_EQ(reps.size(), pts.size());

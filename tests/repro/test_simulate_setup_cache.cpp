@@ -13,8 +13,8 @@ using namespace zc;
 
 namespace {
 
-SimConfig point(const std::string& algorithm, const std::string& scene, int nodes) {
-  SimConfig c;
+RunConfig point(const std::string& algorithm, const std::string& scene, int nodes) {
+  RunConfig c;
   c.machine = "ipsc2";
   c.nodes = nodes;
   c.algorithm = algorithm;
@@ -33,7 +33,7 @@ nlohmann::json modelled(nlohmann::json r) {
 
 TEST(SimulateSetupCache, PointsReportAsIfEachSetUpItsOwnTriangles) {
   const std::string spheres = "blazek/thesis_spheres_4.json";
-  std::vector<SimConfig> pts = {
+  std::vector<RunConfig> pts = {
       point("node-initiated", spheres, 2),    point("host-initiated", spheres, 4),
       point("object-forwarding", spheres, 4), point("host-broadcast", spheres, 8),
       point("elastic", "teapot.json", 4),     point("elastic", "teapot.json", 8),
@@ -54,7 +54,7 @@ TEST(SimulateSetupCache, PointsReportAsIfEachSetUpItsOwnTriangles) {
 
 // ZCUBE_SETUP_CACHE=0: no set-up is held, and a batch's reports are unchanged.
 TEST(SimulateSetupCache, CanBeTurnedOff) {
-  const std::vector<SimConfig> pts = {point("elastic", "teapot.json", 2),
+  const std::vector<RunConfig> pts = {point("elastic", "teapot.json", 2),
                                       point("elastic", "teapot.json", 4),
                                       point("sequential", "teapot.json", 1)};
   const auto with = simulate_batch(pts, 2);

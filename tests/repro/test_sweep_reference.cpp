@@ -80,7 +80,7 @@ TEST(SweepReference, KurcSpeedupIsTheOneZcubeReproduceWrote) {
   auto pts = expand_sweep(axes, scene);
   add_baselines(axes, pts, scene);
   ASSERT_EQ(pts.size(), 2u);
-  std::vector<SimConfig> cfgs;
+  std::vector<RunConfig> cfgs;
   for (const auto& p : pts) {
     ASSERT_TRUE(p.config.has_value()) << p.error;
     cfgs.push_back(*p.config);
@@ -139,7 +139,7 @@ TEST(SweepReference, KurcSweepDividesScanlineByTheTableTwoColumns) {
   ASSERT_TRUE(pts[2].config.has_value()) << pts[2].error;
   ASSERT_EQ(pts[2].config->algorithm, "scanline");
   const auto reps =
-      run_points(pts, [](const std::vector<SimConfig>& c) { return simulate_batch(c, 2); });
+      run_points(pts, [](const std::vector<RunConfig>& c) { return simulate_batch(c, 2); });
   ASSERT_EQ(reps.size(), 3u);
   for (const auto& r : reps)
     ASSERT_EQ(r.value("status", ""), "ok") << r.dump();

@@ -28,8 +28,8 @@ const std::string kRoot = ZCUBE_SOURCE_DIR;
 using test::read_csv;
 
 // An elastic run of the teapot at 64x64.
-SimConfig small_elastic(int nodes) {
-  SimConfig c;
+RunConfig small_elastic(int nodes) {
+  RunConfig c;
   c.machine = "ipsc2";
   c.nodes = nodes;
   c.algorithm = "elastic";
@@ -41,8 +41,8 @@ SimConfig small_elastic(int nodes) {
 } // namespace
 
 TEST(Batch, AFailingPointDoesNotLoseTheOthers) {
-  const SimConfig good = small_elastic(2);
-  SimConfig missing = good;
+  const RunConfig good = small_elastic(2);
+  RunConfig missing = good;
   missing.scene_path = kRoot + "/no/such/scene.json";
   int calls = 0;
   const auto r =

@@ -63,7 +63,7 @@ TEST(NodeContext, PhasesMemoryAndFallbackReportKeys) {
 }
 
 TEST(Memory, ExceedingNodeMemoryFailsAndSaysWhereAndByHowMuch) {
-  SimConfig c = sim_config("ipsc2", 1, Topology::Cube, Fidelity::Circuit);
+  RunConfig c = sim_config("ipsc2", 1, Topology::Cube, Fidelity::Circuit);
   c.algorithm = "sequential";
   c.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/teapot.json";
   c.width = c.height = 1024; // 7 bytes a pixel (depth and colour): 7.3 MB > 4 MB

@@ -147,14 +147,14 @@ TEST(RunFlags, EveryWhatIfIsOneFlagOfTheTable) {
 }
 
 TEST(RunFlags, DefaultsComeFromTheTable) {
-  const SimConfig c = config_from_flags({}, "scene.json");
+  const RunConfig c = config_from_flags({}, "scene.json");
   EXPECT_EQ(c.machine, find_run_flag("machine")->default_text);
   EXPECT_EQ(c.nodes, std::stoi(find_run_flag("nodes")->default_text));
   EXPECT_EQ(c.algorithm, find_run_flag("algorithm")->default_text);
   EXPECT_EQ(c.options.frames, std::stoi(find_run_flag("frames")->default_text));
   EXPECT_EQ(c.scene_path, "scene.json");
   EXPECT_TRUE(c.what_ifs.empty());
-  const SimConfig r = config_from_flags({{"latency", "x0.1"}, {"machine", "ipsc860"}}, "s");
+  const RunConfig r = config_from_flags({{"latency", "x0.1"}, {"machine", "ipsc860"}}, "s");
   EXPECT_EQ(r.what_ifs.get("latency"), (WhatIfValue{0.1, true}));
 }
 

@@ -15,16 +15,16 @@ using namespace zc::test;
 
 namespace {
 
-nlohmann::json run_banded(const SimConfig& cfg, const BandsRequest& req) {
+nlohmann::json run_banded(const RunConfig& cfg, const BandsRequest& req) {
   const auto r =
-      run_batch({cfg}, 1, [&](const SimConfig& c) { return run_with_bands(c, req).report; });
+      run_batch({cfg}, 1, [&](const RunConfig& c) { return run_with_bands(c, req).report; });
   EXPECT_EQ(r.front()["status"], "ok") << r.front().dump().substr(0, 400);
   return r.front();
 }
 
-SimConfig paper_run(const std::string& machine, int nodes, const std::string& algorithm,
+RunConfig paper_run(const std::string& machine, int nodes, const std::string& algorithm,
                     const std::string& scene, int size, Topology topo = Topology::Cube) {
-  SimConfig c;
+  RunConfig c;
   c.machine = machine;
   c.nodes = nodes;
   c.topology = topo;
@@ -51,12 +51,12 @@ const BandsRequest kDraws{.draws = 200, .seed = 7, .sensitivity = true};
 // Every draw is priced by retiming, which must first give the simulated run's figures to the
 // bit; Kurc's schemes (circuit contention), Charles's ring and Blazek's host computer.
 TEST(Bands, RetimedRunsAgreeWithTheSimulationAndHoldThePoint) {
-  const SimConfig runs[] = {
+  const RunConfig runs[] = {
       paper_run("ipsc2", 16, "pair-rs", "scenes/kurc/2pot.json", 200),
       paper_run("ipsc2", 8, "aapc-hbp", "scenes/kurc/1pot.json", 160),
       paper_run("ipsc860", 8, "elastic", "scenes/bone.json", 128, Topology::Ring),
       paper_run("ipsc2", 4, "host-initiated", "scenes/blazek/thesis_spheres_1.json", 64)};
-  for (const SimConfig& c : runs) {
+  for (const RunConfig& c : runs) {
     const auto r = run_banded(c, kDraws);
     ASSERT_TRUE(r.contains("bands")) << c.algorithm;
     const auto& b = r["bands"];
@@ -78,8 +78,8 @@ TEST(Bands, RetimedRunsAgreeWithTheSimulationAndHoldThePoint) {
 // The same draws price both runs, so the band of ten times lower latency's gain is the band of
 // the difference, narrower than the two runs' bands together.
 TEST(Bands, WhatIfDifferenceIsNarrowerThanTheSumOfItsBands) {
-  SimConfig base = paper_run("ipsc2", 16, "pair-rs", "scenes/kurc/2pot.json", 200);
-  SimConfig fast = base;
+  RunConfig base = paper_run("ipsc2", 16, "pair-rs", "scenes/kurc/2pot.json", 200);
+  RunConfig fast = base;
   fast.what_ifs.set("latency", {27.5e-6});
   const BandsRequest req{.draws = 200, .seed = 3};
   const auto a = run_banded(base, req), b = run_banded(fast, req);
@@ -113,7 +113,7 @@ TEST(Bands, UnusedParameterHasZeroElasticity) {
 // so the elasticities against the two are their shares of T and sum to 1.
 TEST(Bands, OneWayMessageElasticitiesSumToOne) {
   for (double bytes : {64.0, 4096.0, 200000.0}) {
-    SimConfig cfg = sim_config("ipsc2", 2, Topology::Cube, Fidelity::Circuit);
+    RunConfig cfg = sim_config("ipsc2", 2, Topology::Cube, Fidelity::Circuit);
     auto a = std::make_shared<Algorithm>();
     a->name = "one-way";
     a->node = [bytes](NodeContext& ctx) {
@@ -141,7 +141,7 @@ TEST(Bands, OneWayMessageElasticitiesSumToOne) {
 
 // Under the flow fidelity the draws are simulations of their own, and the report says so.
 TEST(Bands, FlowFidelityDrawsAreSimulated) {
-  SimConfig c = paper_run("ipsc2", 4, "pair-rs", "scenes/kurc/1pot.json", 96);
+  RunConfig c = paper_run("ipsc2", 4, "pair-rs", "scenes/kurc/1pot.json", 96);
   c.fidelity = Fidelity::Flow;
   const auto r = run_banded(c, {.draws = 8, .seed = 1});
   ASSERT_EQ(r["bands"]["method"], "simulated") << r["bands"].dump();

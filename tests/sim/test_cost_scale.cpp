@@ -13,7 +13,7 @@ using namespace zc;
 using namespace zc::test;
 
 TEST(Scaling, VirtualTimeScalesExactlyWithAGlobalCostFactor) {
-  SimConfig base = sim_config("ipsc860", 8, Topology::Cube, Fidelity::Circuit);
+  RunConfig base = sim_config("ipsc860", 8, Topology::Cube, Fidelity::Circuit);
   base.algorithm = "sequential";
   base.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/teapot.json";
   base.width = base.height = 128;
@@ -30,7 +30,7 @@ TEST(Scaling, VirtualTimeScalesExactlyWithAGlobalCostFactor) {
     const double t1 = run_custom(base, work)["virtual_time_s"].get<double>();
     const double s1 = run_simulation_isolated(base)["virtual_time_s"].get<double>();
     for (double k : {1e-9, 1e-3, 7.0, 1e6}) {
-      SimConfig c = base;
+      RunConfig c = base;
       c.what_ifs.set("cost-scale", {k});
       expect_rel(run_custom(c, work)["virtual_time_s"].get<double>(), k * t1, 1e-12,
                  std::string("collectives, k=") + std::to_string(k) + " " + fidelity_name(f));

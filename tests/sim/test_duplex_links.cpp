@@ -19,7 +19,7 @@ const Fidelity kAll[] = {Fidelity::Analytic, Fidelity::Flow, Fidelity::Circuit};
 // only node 0 sends when `both` is false. Returns the virtual time of the run.
 double exchange(const std::string& machine, Fidelity f, bool both, double delay = 0,
                 WhatIfs o = {}) {
-  SimConfig cfg = sim_config(machine, 2, Topology::Ring, f);
+  RunConfig cfg = sim_config(machine, 2, Topology::Ring, f);
   cfg.what_ifs = o;
   const auto r = run_custom(cfg, [=](NodeContext& ctx) {
     Comm& c = ctx.comm();

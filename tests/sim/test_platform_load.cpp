@@ -55,7 +55,7 @@ TEST(Platforms, SimGridFiguresOfAUserEditedFileAreTheMachine) {
                       {{"bw=\"2777777.777777778Bps\"", "bw=\"277777.7777777778Bps\""},
                        {"lat=\"10000ns\"", "lat=\"30us\""},
                        {"value=\"0:5.9239999999999995e-05:0;", "value=\"0:0.00105924:0;"}});
-  SimConfig c = sim_config(path, 0, Topology::Cube, Fidelity::Circuit); // P from the file
+  RunConfig c = sim_config(path, 0, Topology::Cube, Fidelity::Circuit); // P from the file
   auto t = one_way(c, "3", "10B,1000B");
   std::filesystem::remove(path);
   const double per_byte = 10 * n.per_byte_s, hop = 30e-6, envelope = 16 * (per_byte - n.per_byte_s);
@@ -67,7 +67,7 @@ TEST(Platforms, SimGridFiguresOfAUserEditedFileAreTheMachine) {
 }
 
 TEST(Platforms, HostSpeedIsTheClockThatScalesCompute) {
-  SimConfig s = sim_config("ipsc2", 1, Topology::Cube, Fidelity::Circuit);
+  RunConfig s = sim_config("ipsc2", 1, Topology::Cube, Fidelity::Circuit);
   s.algorithm = "sequential";
   s.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/teapot.json";
   s.width = s.height = 64;
@@ -87,7 +87,7 @@ TEST(Platforms, SimGridRoutesAreTheTopologyRoutes) {
   for (auto [P, topo] :
        {std::pair{32, Topology::Cube}, std::pair{1024, Topology::Cube},
         std::pair{7, Topology::Ring}, std::pair{8, Topology::Ring}, std::pair{2, Topology::Ring}}) {
-    SimConfig c = sim_config("ipsc2", P, topo, Fidelity::Analytic);
+    RunConfig c = sim_config("ipsc2", P, topo, Fidelity::Analytic);
     auto r = run_custom(c, [P, topo](NodeContext& ctx) {
       const int me = ctx.comm().rank();
       if (P > 64 && me % 97 != 0) return; // a sample of sources on the big cube

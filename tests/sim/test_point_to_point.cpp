@@ -34,7 +34,7 @@ nlohmann::json pingpong(const std::string& m, int P, Fidelity f, Topology t = To
                         WhatIfs o = {}, const std::string& to = "1,3,7,15") {
   nlohmann::json all = {{"status", "ok"}, {"results", nlohmann::json::array()}};
   for (const char* size : {"0B", "1B", "64B", "100B", "101B", "1024B", "65536B"}) {
-    SimConfig c = sim_config(m, P, t, f);
+    RunConfig c = sim_config(m, P, t, f);
     c.algorithm = "pingpong";
     c.what_ifs = o;
     c.options.values = {{"from", "0"}, {"to", to}, {"sizes", size}};
@@ -204,7 +204,7 @@ TEST(PointToPoint, FlowMessageActorsFitTheirStacksWithGuardPages) {
        {std::vector<std::string>{"--cfg=contexts/guard-size:1"},
         std::vector<std::string>{"--cfg=contexts/guard-size:1", "--log=root.thres:debug",
                                  "--log=root.app:file:/dev/null"}}) {
-    SimConfig cfg = sim_config("ipsc2", 8, Topology::Cube, Fidelity::Flow);
+    RunConfig cfg = sim_config("ipsc2", 8, Topology::Cube, Fidelity::Flow);
     cfg.simgrid_args = extra;
     const auto r = run_custom(cfg, all_to_all);
     EXPECT_EQ(r["status"], "ok") << extra.back() << ": " << r.dump();

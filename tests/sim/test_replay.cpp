@@ -18,15 +18,15 @@ namespace {
 
 const std::string kRoot = ZCUBE_SOURCE_DIR;
 
-nlohmann::json record_point(const SimConfig& cfg, std::vector<std::uint8_t>* trace) {
+nlohmann::json record_point(const RunConfig& cfg, std::vector<std::uint8_t>* trace) {
   if (!trace) return run_simulation(cfg).report;
   std::shared_ptr<CallTrace> t;
-  SimResult r = record_simulation(cfg, nullptr, t);
+  RunResult r = record_simulation(cfg, nullptr, t);
   if (t) *trace = t->serialize();
   return r.report;
 }
 
-std::optional<nlohmann::json> replay_point(const SimConfig& cfg,
+std::optional<nlohmann::json> replay_point(const RunConfig& cfg,
                                            const std::vector<std::uint8_t>& trace) {
   auto t = std::make_shared<const CallTrace>(CallTrace::parse(trace));
   auto r = replay_simulation(cfg, nullptr, t);
@@ -42,16 +42,16 @@ nlohmann::json deterministic(nlohmann::json r) {
 
 // Records `a`, replays it for each of `others` (all one key), and checks each replay against
 // the other's full run. Returns how the points ran.
-ReplayCounts expect_replays_exact(const SimConfig& a, const std::vector<SimConfig>& others) {
-  std::vector<SimConfig> points = {a};
+ReplayCounts expect_replays_exact(const RunConfig& a, const std::vector<RunConfig>& others) {
+  std::vector<RunConfig> points = {a};
   points.insert(points.end(), others.begin(), others.end());
   TraceStore traces;
   ReplayCounts counts;
-  const ReplayRunner runner{[](const SimConfig&) { return std::string("key"); }, record_point,
+  const ReplayRunner runner{[](const RunConfig&) { return std::string("key"); }, record_point,
                             replay_point};
   const auto replayed = run_batch_replaying(points, 2, runner, traces, {}, &counts);
   const auto full =
-      run_batch(others, 2, [](const SimConfig& c) { return run_simulation(c).report; });
+      run_batch(others, 2, [](const RunConfig& c) { return run_simulation(c).report; });
   EXPECT_EQ(counts.recorded, 1u);
   EXPECT_EQ(replayed.front()["status"], "ok") << replayed.front().dump();
   for (std::size_t i = 0; i < others.size(); ++i) {
@@ -62,8 +62,8 @@ ReplayCounts expect_replays_exact(const SimConfig& a, const std::vector<SimConfi
   return counts;
 }
 
-SimConfig point(const std::string& algorithm, const std::string& scene, int nodes, int size) {
-  SimConfig c = sim_config("ipsc2", nodes, Topology::Cube, Fidelity::Circuit);
+RunConfig point(const std::string& algorithm, const std::string& scene, int nodes, int size) {
+  RunConfig c = sim_config("ipsc2", nodes, Topology::Cube, Fidelity::Circuit);
   c.algorithm = algorithm;
   c.scene_path = kRoot + "/scenes/" + scene;
   c.width = c.height = size;
@@ -73,8 +73,8 @@ SimConfig point(const std::string& algorithm, const std::string& scene, int node
 
 // Other CPU costs and network (the iPSC/860), other latency, bandwidth and CPU speed under the
 // flow and analytic models.
-std::vector<SimConfig> other_machines(const SimConfig& a) {
-  SimConfig b = a, c = a, d = a;
+std::vector<RunConfig> other_machines(const RunConfig& a) {
+  RunConfig b = a, c = a, d = a;
   b.machine = "ipsc860";
   c.what_ifs.set("latency", {27.5e-6});
   c.what_ifs.set("bandwidth", {11e6});
@@ -86,7 +86,7 @@ std::vector<SimConfig> other_machines(const SimConfig& a) {
   return {b, c, d};
 }
 
-void expect_all_replayed(const SimConfig& a) {
+void expect_all_replayed(const RunConfig& a) {
   const ReplayCounts n = expect_replays_exact(a, other_machines(a));
   EXPECT_EQ(n.replayed, 3u);
   EXPECT_EQ(n.diverged, 0u);
@@ -95,7 +95,7 @@ void expect_all_replayed(const SimConfig& a) {
 } // namespace
 
 TEST(Replay, ElasticWithRequestedVerticesAndFrames) {
-  SimConfig a = point("elastic", "teapot.json", 8, 96);
+  RunConfig a = point("elastic", "teapot.json", 8, 96);
   a.options.values = {{"vertices", "request"}};
   a.options.frames = 2;
   expect_all_replayed(a);
@@ -110,7 +110,7 @@ TEST(Replay, BlazekMethods) {
   for (const char* algo :
        {"host-initiated", "node-initiated", "object-forwarding", "host-broadcast"}) {
     SCOPED_TRACE(algo);
-    const SimConfig a = point(algo, "blazek/spheres_16.json", 8, 96);
+    const RunConfig a = point(algo, "blazek/spheres_16.json", 8, 96);
     const ReplayCounts n = expect_replays_exact(a, other_machines(a));
     EXPECT_EQ(n.replayed + n.diverged, 3u);
   }
@@ -122,8 +122,8 @@ TEST(Replay, CompositingStudy) {
 
 // A node memory the run outgrows: the replay fails at the same call with the same message.
 TEST(Replay, OutOfNodeMemoryAtTheSameCall) {
-  const SimConfig a = point("zbuf-exc", "kurc/2pot.json", 8, 256);
-  SimConfig b = a;
+  const RunConfig a = point("zbuf-exc", "kurc/2pot.json", 8, 256);
+  RunConfig b = a;
   b.what_ifs.set("memory", {1.2e6});
   const auto full = run_simulation_isolated(b);
   ASSERT_EQ(full["status"], "out_of_memory") << full.dump();
@@ -154,9 +154,9 @@ TEST(Replay, DivergenceFallsBackToAFullRun) {
       c.send(0, 7, Bytes(100'000));
     }
   };
-  SimConfig a = sim_config("ipsc2", 4, Topology::Cube, Fidelity::Circuit);
+  RunConfig a = sim_config("ipsc2", 4, Topology::Cube, Fidelity::Circuit);
   a.custom = algo;
-  SimConfig b = a;
+  RunConfig b = a;
   b.what_ifs.set("cpu-scale", {1e-5});
   const ReplayCounts n = expect_replays_exact(a, {b});
   EXPECT_EQ(n.diverged, 1u);

@@ -31,8 +31,8 @@ nlohmann::json two_messages(Fidelity f) {
   });
 }
 
-SimConfig kurc_point(const std::string& algorithm, Fidelity f) {
-  SimConfig c = sim_config("ipsc2", 8, Topology::Cube, f);
+RunConfig kurc_point(const std::string& algorithm, Fidelity f) {
+  RunConfig c = sim_config("ipsc2", 8, Topology::Cube, f);
   c.algorithm = algorithm;
   c.scene_path = test::kRoot + "/scenes/kurc/2pot.json";
   c.width = c.height = 128;

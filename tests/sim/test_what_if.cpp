@@ -25,7 +25,7 @@ using namespace zc;
 using namespace zc::test;
 
 TEST(WhatIfs, WhatIfFlagsChangeTheFormula) {
-  SimConfig c = sim_config("ipsc860", 8, Topology::Cube, Fidelity::Analytic);
+  RunConfig c = sim_config("ipsc860", 8, Topology::Cube, Fidelity::Analytic);
   c.what_ifs.set("latency", {1e-3});
   c.what_ifs.set("bandwidth", {1e6});
   c.what_ifs.set("per-hop", {50e-6});
@@ -37,7 +37,7 @@ TEST(WhatIfs, WhatIfFlagsChangeTheFormula) {
   auto f = one_way(c, "7", "1000B");
   expect_rel(f.at({1000.0, 3}), 1e-3 + 1000e-6 + 2 * 50e-6, 1e-12, "flow");
   // --cpu-scale multiplies the CPU and nothing else.
-  SimConfig s = sim_config("ipsc2", 1, Topology::Cube, Fidelity::Circuit);
+  RunConfig s = sim_config("ipsc2", 1, Topology::Cube, Fidelity::Circuit);
   s.algorithm = "sequential";
   s.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/teapot.json";
   s.width = s.height = 96;
@@ -53,7 +53,7 @@ TEST(WhatIfs, RelativeWhatIfsKeepEveryProtocolAgainstTheClosedForm) {
   const NetworkParams n = machine_spec("ipsc860").net;
   ASSERT_NE(n.startup_short_s, n.startup_long_s);
   for (const Fidelity fid : {Fidelity::Analytic, Fidelity::Circuit}) {
-    SimConfig c = sim_config("ipsc860", 8, Topology::Cube, fid);
+    RunConfig c = sim_config("ipsc860", 8, Topology::Cube, fid);
     c.what_ifs.set("latency", {0.1, true});
     c.what_ifs.set("bandwidth", {2, true});
     const auto t = one_way(c, "1,7", "10B,1000B");
@@ -71,7 +71,7 @@ TEST(WhatIfs, RelativeWhatIfsKeepEveryProtocolAgainstTheClosedForm) {
 // A report says which model made its times: the what-ifs in force, every CPU cost (scaled), the
 // host link, and every option of the algorithm with its default.
 TEST(WhatIfs, TheReportStatesTheWhatIfsCpuCostsAndOptions) {
-  SimConfig s = sim_config("ipsc860", 2, Topology::Cube, Fidelity::Circuit);
+  RunConfig s = sim_config("ipsc860", 2, Topology::Cube, Fidelity::Circuit);
   s.algorithm = "elastic";
   s.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/teapot.json";
   s.width = s.height = 32;
@@ -112,7 +112,7 @@ TEST(WhatIfs, HostLinkWhatIfsGiveTheHostMessagesClosedForm) {
     ctx.comm().send(0, 1, Bytes(std::size_t(n)));
     ctx.comm().recv(0, 2);
   };
-  SimConfig h = sim_config("ipsc2", 2, Topology::Cube, Fidelity::Analytic);
+  RunConfig h = sim_config("ipsc2", 2, Topology::Cube, Fidelity::Analytic);
   h.custom = ha;
   const auto before = run_simulation_isolated(h);
   ASSERT_EQ(before.value("status", ""), "ok") << before.dump();

@@ -23,8 +23,8 @@ inline void expect_rel(double got, double want, double tol, const std::string& w
       << what << ": got " << got << " want " << want;
 }
 
-inline SimConfig sim_config(const std::string& machine, int nodes, Topology topo, Fidelity fid) {
-  SimConfig c;
+inline RunConfig sim_config(const std::string& machine, int nodes, Topology topo, Fidelity fid) {
+  RunConfig c;
   c.machine = machine;
   c.nodes = nodes;
   c.topology = topo;
@@ -33,7 +33,7 @@ inline SimConfig sim_config(const std::string& machine, int nodes, Topology topo
   return c;
 }
 
-inline nlohmann::json run_custom(SimConfig cfg, std::function<void(NodeContext&)> node) {
+inline nlohmann::json run_custom(RunConfig cfg, std::function<void(NodeContext&)> node) {
   auto a = std::make_shared<Algorithm>();
   a->name = "test";
   a->node = std::move(node);
@@ -49,8 +49,8 @@ inline double vtime(const nlohmann::json& r) {
 
 // One-way times of a ping-pong from node 0, indexed by (bytes, hops).
 inline std::map<std::pair<double, int>, double>
-one_way(const SimConfig& base, const std::string& to, const std::string& sizes) {
-  SimConfig c = base;
+one_way(const RunConfig& base, const std::string& to, const std::string& sizes) {
+  RunConfig c = base;
   c.algorithm = "pingpong";
   c.options.values = {{"from", "0"}, {"to", to}, {"sizes", sizes}};
   auto r = run_simulation_isolated(c);

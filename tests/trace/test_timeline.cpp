@@ -10,8 +10,8 @@ using namespace zc::test;
 
 namespace {
 
-SimConfig traced(const std::string& algo, const std::string& scene, int P, Fidelity f) {
-  SimConfig c = sim_config("ipsc2", P, Topology::Cube, f);
+RunConfig traced(const std::string& algo, const std::string& scene, int P, Fidelity f) {
+  RunConfig c = sim_config("ipsc2", P, Topology::Cube, f);
   c.algorithm = algo;
   c.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/" + scene;
   c.width = c.height = 128;
@@ -32,7 +32,7 @@ double closed_form(const NetworkParams& net, const nlohmann::json& m, int P) {
 } // namespace
 
 TEST(Timeline, OnlyWhenAskedAndWithoutChangingTheRun) {
-  SimConfig c = traced("aapc-hbp", "scenes/kurc/2pot.json", 4, Fidelity::Circuit);
+  RunConfig c = traced("aapc-hbp", "scenes/kurc/2pot.json", 4, Fidelity::Circuit);
   const auto with = run_simulation_isolated(c);
   c.timeline = false;
   const auto without = run_simulation_isolated(c);

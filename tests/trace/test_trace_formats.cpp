@@ -40,8 +40,8 @@ const std::vector<Case>& cases() {
   return c;
 }
 
-SimConfig config(const Case& k, Fidelity f) {
-  SimConfig c;
+RunConfig config(const Case& k, Fidelity f) {
+  RunConfig c;
   c.algorithm = k.algorithm;
   c.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/" + k.scene;
   c.nodes = k.nodes;
@@ -55,7 +55,7 @@ SimConfig config(const Case& k, Fidelity f) {
 // Every case at every fidelity, simulated once for all the tests below.
 const std::vector<nlohmann::json>& reports() {
   static const std::vector<nlohmann::json> r = [] {
-    std::vector<SimConfig> pts;
+    std::vector<RunConfig> pts;
     for (const auto& k : cases())
       for (Fidelity f : {Fidelity::Analytic, Fidelity::Flow, Fidelity::Circuit})
         pts.push_back(config(k, f));

@@ -11,7 +11,7 @@ namespace {
 
 nlohmann::json run_method(const std::string& algo, const std::string& scene, int P, int size,
                           std::map<std::string, std::string> opt = {}, bool compare = true) {
-  SimConfig c = sim_config("ipsc2", P, Topology::Cube, Fidelity::Circuit);
+  RunConfig c = sim_config("ipsc2", P, Topology::Cube, Fidelity::Circuit);
   c.algorithm = algo;
   c.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/" + scene;
   c.width = c.height = size;
@@ -97,7 +97,7 @@ TEST(Blazek, InterleavedLinesBalanceAClusteredSceneBetterThanStrips) {
 }
 
 TEST(Blazek, A1024FrameBufferDoesNotFitAFourMegabyteNodeButStripsDo) {
-  SimConfig c = sim_config("ipsc2", 16, Topology::Cube, Fidelity::Circuit);
+  RunConfig c = sim_config("ipsc2", 16, Topology::Cube, Fidelity::Circuit);
   c.scene_path = std::string(ZCUBE_SOURCE_DIR) + "/scenes/blazek/spheres_16.json";
   c.width = c.height = 1024;
   c.compare_with_sequential = false;

@@ -11,7 +11,7 @@ TEST(Robustness, BlazekMergeOnRingsOfAnySize) {
   // The hierarchical merge (Algorithm 4) on node counts that are not powers of two.
   for (const char* algo : {"host-initiated", "node-initiated"})
     for (int P : {3, 6}) {
-      SimConfig c = sim_config("ipsc2", P, Topology::Ring, Fidelity::Circuit);
+      RunConfig c = sim_config("ipsc2", P, Topology::Ring, Fidelity::Circuit);
       c.algorithm = algo;
       c.width = c.height = 48;
       c.compare_with_sequential = true;

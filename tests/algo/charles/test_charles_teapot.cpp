@@ -24,7 +24,7 @@ struct Row {
 const Row kTable1[] = {{1304, 63}, {1056, 21}, {822, 22}, {1056, 149}};
 
 nlohmann::json table1_run() {
-  SimConfig c = sim_config("ipsc860", 4, Topology::Cube, Fidelity::Circuit);
+  RunConfig c = sim_config("ipsc860", 4, Topology::Cube, Fidelity::Circuit);
   c.algorithm = "elastic";
   c.scene_path = kScene;
   c.width = c.height = 256;

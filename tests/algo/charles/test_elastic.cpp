@@ -14,7 +14,7 @@ namespace {
 
 nlohmann::json elastic(const std::string& scene, int P, Topology t, const std::string& vertices,
                        int frames = 1, int size = 96, const std::string& machine = "ipsc860") {
-  SimConfig c = sim_config(machine, P, t, Fidelity::Circuit);
+  RunConfig c = sim_config(machine, P, t, Fidelity::Circuit);
   c.algorithm = "elastic";
   c.scene_path = scene;
   c.width = c.height = size;
@@ -120,7 +120,7 @@ TEST(Elastic, OutputDeviceSendsNoPictureAndGatherSendsTheOtherSlices) {
   for (int size : {96, 192}) {
     std::map<std::string, nlohmann::json> r;
     for (const char* out : {"device", "gather"}) {
-      SimConfig c = sim_config("ipsc860", 4, Topology::Cube, Fidelity::Circuit);
+      RunConfig c = sim_config("ipsc860", 4, Topology::Cube, Fidelity::Circuit);
       c.algorithm = "elastic";
       c.scene_path = kTeapot;
       c.width = c.height = size;

@@ -28,7 +28,7 @@ std::string kurc_scene(const std::string& name) {
 
 nlohmann::json kurc(const std::string& scheme, const std::string& scene, int P, int size,
                     bool compare = true) {
-  SimConfig c = sim_config("ipsc2", P, Topology::Cube, Fidelity::Circuit);
+  RunConfig c = sim_config("ipsc2", P, Topology::Cube, Fidelity::Circuit);
   c.algorithm = scheme;
   c.scene_path = scene;
   c.width = c.height = size;
@@ -88,7 +88,7 @@ TEST(Kurc, VolumesAndBalanceOnThePapersScenes) {
 }
 
 TEST(Kurc, FullZBufferOfA640ScreenDoesNotFitAFourMegabyteNode) {
-  SimConfig c = sim_config("ipsc2", 16, Topology::Cube, Fidelity::Circuit);
+  RunConfig c = sim_config("ipsc2", 16, Topology::Cube, Fidelity::Circuit);
   c.algorithm = "zbuf-exc";
   c.scene_path = kurc_scene("1pot");
   c.width = c.height = 640;
