@@ -117,6 +117,90 @@ static int finish(RunResult& r, const std::string& report, const std::string& im
   return 0;
 }
 
+// What a run writes besides its summary, and how it is run.
+struct RunOutputs {
+  std::string image, depth, report, backend = "sim", sensitivity_plot;
+  TimelineOutputs tl;
+  BandsRequest bands;
+  bool list = false;
+};
+
+static void add_output_options(CLI::App& app, RunOutputs& o) {
+  app.add_option("--image", o.image, "write the (last) picture as PNG");
+  app.add_option("--depth", o.depth, "write its depth as EXR");
+  app.add_option("--report", o.report,
+                 "write the report JSON (- or /dev/stdout: to standard output, the summary to "
+                 "standard error)");
+  app.add_option("--backend", o.backend,
+                 "sim (SimGrid, virtual time) or mpi (real processes under mpirun, measured time)")
+      ->check(CLI::IsMember({"sim", "mpi"}))
+      ->capture_default_str();
+  app.add_option("--trace", o.tl.trace,
+                 "write the run's timeline: FILE.json (Chrome/Perfetto) or FILE.trace (Paje)");
+  app.add_option("--gantt", o.tl.gantt, "draw a space-time diagram of the run: FILE.png|.svg|.pdf");
+  app.add_option("--bands", o.bands.draws,
+                 "N draws of the uncertainty model (docs/uncertainty.md): p05, p50 and p95 of "
+                 "every time in the report")
+      ->check(CLI::Range(0, 100000));
+  app.add_option("--bands-seed", o.bands.seed, "the draws' seed (the same draws for every run)")
+      ->capture_default_str();
+  app.add_flag("--sensitivity", o.bands.sensitivity,
+               "elasticity d ln T / d ln theta of every model parameter; prints the five largest");
+  app.add_option("--sensitivity-plot", o.sensitivity_plot,
+                 "draw the elasticities of the timed region as a tornado plot: FILE.png|.svg|.pdf");
+  app.add_flag("--list", o.list, "list the algorithms and exit");
+}
+
+// Every output before the simulation, not after it: writable, not a directory, each its own file.
+static void check_outputs(RunOutputs& o) {
+  // The report on standard output: nothing else may go there from now on.
+  if (names_stdout(o.report)) reserve_stdout_for_result();
+  if (!o.sensitivity_plot.empty()) {
+    check_tornado_path(o.sensitivity_plot);
+    o.bands.sensitivity = true;
+  }
+  check_output_paths({{"--sensitivity-plot", o.sensitivity_plot},
+                      {"--report", names_stdout(o.report) ? std::string() : o.report},
+                      {"--image", o.image},
+                      {"--depth", o.depth},
+                      {"--trace", o.tl.trace},
+                      {"--gantt", o.tl.gantt}});
+  check_image_path(o.image, "--image");
+  check_image_path(o.depth, "--depth");
+  if (!o.tl.trace.empty()) check_trace_path(o.tl.trace);
+  if (!o.tl.gantt.empty()) check_gantt_path(o.tl.gantt);
+  if (o.backend == "mpi" && (o.bands.draws > 0 || o.bands.sensitivity))
+    throw UsageError("--bands, --sensitivity: the MPI backend measures; it has no model to draw");
+}
+
+// A speed-up figure of a paper needs the sequential time on the same machine: one more
+// simulation, in its own process and before this one (a forked child must not inherit a SimGrid
+// engine). None when the run matches no such figure.
+static std::optional<double> sequential_time_for_paper(const RunConfig& cfg) {
+  if (cfg.algorithm != "elastic" || cfg.machine != "ipsc860" || // cheap tests before loading
+      !needs_sequential_time(report_header(cfg)))
+    return std::nullopt;
+  RunConfig seq = cfg;
+  seq.algorithm = "sequential";
+  seq.nodes = 1;
+  seq.options = AlgorithmOptions{};
+  seq.compare_with_sequential = false;
+  const auto sr = run_simulation_isolated(seq);
+  if (sr.value("status", "") != "ok") return std::nullopt;
+  return timed_s(sr);
+}
+
+static int run_on_mpi([[maybe_unused]] const RunConfig& cfg, [[maybe_unused]] const RunOutputs& o) {
+#ifdef ZCUBE_HAVE_MPI
+  MpiSession mpi;
+  RunResult r = run_mpi(cfg);
+  return mpi.rank() == 0 ? finish(r, o.report, o.image, o.depth, o.tl) : 0;
+#else
+  throw UsageError("--backend mpi: this zcube was built without MPI (scripts/setup.sh installs "
+                   "libopenmpi-dev; then rebuild)");
+#endif
+}
+
 static int cmd_run(std::vector<std::string> args) {
   CLI::App app{"Simulate a parallel z-buffer algorithm on a 1990s machine model", "zcube run"};
   SimFlags sf;
@@ -128,105 +212,38 @@ static int cmd_run(std::vector<std::string> args) {
     return f.group == RunFlag::Group::Option || f.name == "algorithm" || f.name == "scene" ||
            f.name == "size" || f.name == "frames";
   });
-  std::string image, depth, report;
-  app.add_option("--image", image, "write the (last) picture as PNG");
-  app.add_option("--depth", depth, "write its depth as EXR");
-  app.add_option("--report", report,
-                 "write the report JSON (- or /dev/stdout: to standard output, the summary to "
-                 "standard error)");
-  std::string backend = "sim";
-  app.add_option("--backend", backend,
-                 "sim (SimGrid, virtual time) or mpi (real processes under mpirun, measured time)")
-      ->check(CLI::IsMember({"sim", "mpi"}))
-      ->capture_default_str();
-  TimelineOutputs tl;
-  app.add_option("--trace", tl.trace,
-                 "write the run's timeline: FILE.json (Chrome/Perfetto) or FILE.trace (Paje)");
-  app.add_option("--gantt", tl.gantt, "draw a space-time diagram of the run: FILE.png|.svg|.pdf");
-  BandsRequest bands;
-  app.add_option("--bands", bands.draws,
-                 "N draws of the uncertainty model (docs/uncertainty.md): p05, p50 and p95 of "
-                 "every time in the report")
-      ->check(CLI::Range(0, 100000));
-  app.add_option("--bands-seed", bands.seed, "the draws' seed (the same draws for every run)")
-      ->capture_default_str();
-  std::string sensitivity_plot;
-  app.add_flag("--sensitivity", bands.sensitivity,
-               "elasticity d ln T / d ln theta of every model parameter; prints the five largest");
-  app.add_option("--sensitivity-plot", sensitivity_plot,
-                 "draw the elasticities of the timed region as a tornado plot: FILE.png|.svg|.pdf");
-  bool list = false;
-  app.add_flag("--list", list, "list the algorithms and exit");
+  RunOutputs o;
+  add_output_options(app, o);
   if (int rc = parse(app, args); rc >= 0) return rc;
-  if (list) {
+  if (o.list) {
     for (const auto& a : algorithms())
       std::cout << a.name << "  " << a.summary << "\n";
     return 0;
   }
-  // The report on standard output: nothing else may go there from now on.
-  if (names_stdout(report)) reserve_stdout_for_result();
-  // Every output before the simulation, not after it: writable, not a directory, each its own file.
-  if (!sensitivity_plot.empty()) {
-    check_tornado_path(sensitivity_plot);
-    bands.sensitivity = true;
-  }
-  check_output_paths({{"--sensitivity-plot", sensitivity_plot},
-                      {"--report", names_stdout(report) ? std::string() : report},
-                      {"--image", image},
-                      {"--depth", depth},
-                      {"--trace", tl.trace},
-                      {"--gantt", tl.gantt}});
-  check_image_path(image, "--image");
-  check_image_path(depth, "--depth");
+  check_outputs(o);
   auto flags = sf.flags();
   flags.merge(given_flags(more));
   RunConfig cfg = config_from_flags(flags, default_scene_path());
-  if ((!image.empty() || !depth.empty()) && !find_algorithm(cfg.algorithm).draws_picture)
-    throw UsageError(std::string(image.empty() ? "--depth" : "--image") + ": " + cfg.algorithm +
+  if ((!o.image.empty() || !o.depth.empty()) && !find_algorithm(cfg.algorithm).draws_picture)
+    throw UsageError(std::string(o.image.empty() ? "--depth" : "--image") + ": " + cfg.algorithm +
                      " draws no picture");
   cfg.simgrid_args = sf.simgrid_args();
   check_simgrid_args(cfg.simgrid_args);
   std::cout << describe_overrides(cfg);
-  if (!tl.trace.empty()) check_trace_path(tl.trace);
-  if (!tl.gantt.empty()) check_gantt_path(tl.gantt);
-  cfg.timeline = tl.wanted();
-  // A speed-up figure of a paper needs the sequential time on the same machine: one more
-  // simulation, in its own process and before this one (a forked child must not inherit a
-  // SimGrid engine).
-  if (backend == "mpi" && (bands.draws > 0 || bands.sensitivity))
-    throw UsageError("--bands, --sensitivity: the MPI backend measures; it has no model to draw");
-  if (backend == "mpi") {
-#ifdef ZCUBE_HAVE_MPI
-    MpiSession mpi;
-    RunResult r = run_mpi(cfg);
-    return mpi.rank() == 0 ? finish(r, report, image, depth, tl) : 0;
-#else
-    throw UsageError("--backend mpi: this zcube was built without MPI (scripts/setup.sh installs "
-                     "libopenmpi-dev; then rebuild)");
-#endif
-  }
-  std::optional<double> seq_s;
-  if (cfg.algorithm == "elastic" && cfg.machine == "ipsc860" && // cheap tests before loading
-      needs_sequential_time(report_header(cfg))) {
-    RunConfig seq = cfg;
-    seq.algorithm = "sequential";
-    seq.nodes = 1;
-    seq.options = AlgorithmOptions{};
-    seq.compare_with_sequential = false;
-    const auto sr = run_simulation_isolated(seq);
-    if (sr.value("status", "") == "ok") seq_s = timed_s(sr);
-  }
+  cfg.timeline = o.tl.wanted();
+  if (o.backend == "mpi") return run_on_mpi(cfg, o);
+  const std::optional<double> seq_s = sequential_time_for_paper(cfg);
   RunResult r =
-      bands.draws > 0 || bands.sensitivity ? run_with_bands(cfg, bands) : run_simulation(cfg);
+      o.bands.draws > 0 || o.bands.sensitivity ? run_with_bands(cfg, o.bands) : run_simulation(cfg);
   attach_paper_figures(r.report);
-  if (r.ok && !sensitivity_plot.empty() &&
-      !draw_tornado(r.report, sensitivity_plot, source_root())) {
-    std::cerr << "zcube: error: --sensitivity-plot " << sensitivity_plot
+  if (r.ok && !o.sensitivity_plot.empty() &&
+      !draw_tornado(r.report, o.sensitivity_plot, source_root())) {
+    std::cerr << "zcube: error: --sensitivity-plot " << o.sensitivity_plot
               << ": scripts/plot_tornado.py failed\n";
     return 1;
   }
   if (r.ok && seq_s) r.report["paper"] = paper_figures_for(r.report, seq_s);
-  return finish(r, report, image, depth, tl);
+  return finish(r, o.report, o.image, o.depth, o.tl);
 }
 
 ZC_COMMAND("run", "simulate an algorithm on a machine model", cmd_run);

@@ -50,7 +50,11 @@ void check_platform_file(const std::string& path);
 // passes them after zcube's own settings and before the user's --cfg.
 std::vector<std::string> platform_file_settings(const std::string& path);
 
+// The model of the platform loaded into `e` (sim/platform_read.cpp); InputError names `label`.
 PlatformModel read_platform(const simgrid::s4u::Engine& e, const std::string& label);
+
+// Whether a link is a T800-style duplex link (its two-way total; machine/platform_xml.hpp).
+bool is_duplex_link(const std::string& name);
 
 // The what-ifs (run/what_if.hpp), then the links set to what the fidelities need: bandwidth from
 // the model, zero latency (zcube charges start-up and hops itself, so SimGrid's flow sharing is
