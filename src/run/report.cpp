@@ -98,14 +98,15 @@ void add_run_header(nlohmann::json& j, const RunHeader& h, const RunConfig& cfg,
                 {"height", scene.height}};
 }
 
-void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, int P,
-                       double total_s) {
-  // Phases: per node totals, then max/mean/min over the nodes that entered the phase.
+namespace {
+
+// Phases: per node totals, then max/mean/min over the nodes that entered the phase.
+nlohmann::json phase_section(const std::vector<NodeRecord>& nodes) {
   std::vector<std::string> order;
   for (const auto& c : nodes)
     for (const auto& n : c.phase_order)
       if (std::find(order.begin(), order.end(), n) == order.end()) order.push_back(n);
-  j["phases"] = nlohmann::json::array();
+  nlohmann::json phases = nlohmann::json::array();
   for (const auto& n : order) {
     double mx = 0, sum = 0, mn = 1e300;
     int cnt = 0;
@@ -120,42 +121,51 @@ void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, 
       if (auto t = c.stats.phase_traffic.find(n); t != c.stats.phase_traffic.end())
         sent += t->second;
     }
-    j["phases"].push_back({{"name", n},
-                           {"max_s", mx},
-                           {"mean_s", sum / cnt},
-                           {"min_s", mn},
-                           {"messages", sent.messages},
-                           {"charged_bytes", sent.charged_bytes},
-                           {"payload_bytes", sent.payload_bytes}});
+    phases.push_back({{"name", n},
+                      {"max_s", mx},
+                      {"mean_s", sum / cnt},
+                      {"min_s", mn},
+                      {"messages", sent.messages},
+                      {"charged_bytes", sent.charged_bytes},
+                      {"payload_bytes", sent.payload_bytes}});
   }
+  return phases;
+}
+
+// One node's entry of "per_node".
+nlohmann::json node_entry(const NodeRecord& rec, double total_s) {
+  const NodeStats& s = rec.stats;
+  nlohmann::json ph = nlohmann::json::object();
+  for (const auto& [n, t] : rec.phase_totals)
+    ph[n] = t;
+  // Operations per phase, zero counts left out (the calibration's linear model).
+  nlohmann::json pw = nlohmann::json::object();
+  for (const auto& [n, w] : rec.phase_work)
+    if (nlohmann::json nz = nonzero_json(w); !nz.empty())
+      pw[n.empty() ? "(no phase)" : n] = std::move(nz);
+  nlohmann::json e = {{"rank", rec.rank},
+                      {"busy_s", s.busy_s},
+                      {"comm_s", s.comm_s},
+                      {"idle_s", std::max(0.0, total_s - s.busy_s - s.comm_s)},
+                      {"bytes_sent", s.bytes_sent},
+                      {"payload_bytes_sent", s.payload_bytes_sent},
+                      {"messages", s.messages},
+                      {"peak_memory_bytes", s.peak_memory},
+                      {"phases", ph},
+                      {"phase_work", pw}};
+  if (!rec.metrics.empty()) e["metrics"] = rec.metrics;
+  return e;
+}
+
+// The run's totals: communication, counters, load imbalance and the paper's timed region.
+void add_totals(nlohmann::json& j, const std::vector<NodeRecord>& nodes, int P) {
   Counters total;
   std::uint64_t msgs = 0, bytes = 0, payload = 0;
-  j["per_node"] = nlohmann::json::array();
   for (const NodeRecord& rec : nodes) {
-    const NodeStats& s = rec.stats;
     total += rec.work;
-    msgs += s.messages;
-    bytes += s.bytes_sent;
-    payload += s.payload_bytes_sent;
-    nlohmann::json ph = nlohmann::json::object();
-    for (const auto& [n, t] : rec.phase_totals)
-      ph[n] = t;
-    // Operations per phase, zero counts left out (the calibration's linear model).
-    nlohmann::json pw = nlohmann::json::object();
-    for (const auto& [n, w] : rec.phase_work)
-      if (nlohmann::json nz = nonzero_json(w); !nz.empty())
-        pw[n.empty() ? "(no phase)" : n] = std::move(nz);
-    j["per_node"].push_back({{"rank", rec.rank},
-                             {"busy_s", s.busy_s},
-                             {"comm_s", s.comm_s},
-                             {"idle_s", std::max(0.0, total_s - s.busy_s - s.comm_s)},
-                             {"bytes_sent", s.bytes_sent},
-                             {"payload_bytes_sent", s.payload_bytes_sent},
-                             {"messages", s.messages},
-                             {"peak_memory_bytes", s.peak_memory},
-                             {"phases", ph},
-                             {"phase_work", pw}});
-    if (!rec.metrics.empty()) j["per_node"].back()["metrics"] = rec.metrics;
+    msgs += rec.stats.messages;
+    bytes += rec.stats.bytes_sent;
+    payload += rec.stats.payload_bytes_sent;
   }
   // Defaults of the report keys an algorithm may refine through its metrics (Kurc et al.
   // replace both by their own definitions: the sum over communication steps of the largest
@@ -166,17 +176,14 @@ void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, 
   //    algorithms use for their own loads; 0 when nobody worked.
   std::uint64_t max_sent = 0;
   std::vector<double> busy;
-  for (int r = 0; r < P; ++r) {
-    const NodeStats& s = nodes[std::size_t(r)].stats;
-    max_sent = std::max(max_sent, s.bytes_sent);
-    busy.push_back(s.busy_s);
-  }
   // The paper's timed region (docs/papers.md): the longest (end - start) over the nodes that
   // started one, the end being the node's finish unless it marked one; absent when no node
   // started one (the whole run is timed).
   double timed_s = -1;
   for (int r = 0; r < P; ++r) {
     const NodeStats& s = nodes[std::size_t(r)].stats;
+    max_sent = std::max(max_sent, s.bytes_sent);
+    busy.push_back(s.busy_s);
     if (s.timed) timed_s = std::max(timed_s, s.timed_until_s() - s.timed_start_s);
   }
   if (timed_s >= 0) j["timed_s"] = timed_s;
@@ -187,6 +194,17 @@ void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, 
                         {"concurrent_volume_bytes", max_sent}};
   j["counters"] = total;
   j["load_imbalance"] = load_imbalance(busy);
+}
+
+} // namespace
+
+void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, int P,
+                       double total_s) {
+  j["phases"] = phase_section(nodes);
+  j["per_node"] = nlohmann::json::array();
+  for (const NodeRecord& rec : nodes)
+    j["per_node"].push_back(node_entry(rec, total_s));
+  add_totals(j, nodes, P);
   std::vector<const EventLog*> logs;
   std::vector<nlohmann::json> ranks;
   for (const NodeRecord& rec : nodes) {
