@@ -232,9 +232,11 @@ std::string plan_directory(const ReproduceOptions& o, const PaperPlan& p, std::s
   return dir + "-quick";
 }
 
-int reproduce(const ReproduceOptions& o) {
-  const auto t0 = std::chrono::steady_clock::now();
-  if (o.write) prepare_output_dir(o.out); // before anything runs
+namespace {
+
+// The plans of the papers asked for (all: every paper, then the fidelity study and the claims,
+// which read the papers' runs), their charts named in the plot format asked.
+std::vector<PaperPlan> plans_of(const ReproduceOptions& o) {
   std::vector<PaperPlan> plans;
   const bool all = o.papers.empty();
   if (all)
@@ -255,8 +257,14 @@ int reproduce(const ReproduceOptions& o) {
   for (auto& p : plans)
     for (auto& g : p.gantt)
       g.file = with_plot_format(g.file, o.plot_format);
+  return plans;
+}
+
+// Each plan's directory; `kept` says which committed directories were kept and where this run's
+// tables went instead.
+std::vector<std::string> plan_directories(const ReproduceOptions& o,
+                                          const std::vector<PaperPlan>& plans, std::string& kept) {
   std::vector<std::string> dirs;
-  std::string kept;
   for (const auto& p : plans) {
     std::string note;
     dirs.push_back(plan_directory(o, p, &note));
@@ -264,21 +272,104 @@ int reproduce(const ReproduceOptions& o) {
     kept += (kept.empty() ? "" : "; ") + note;
     if (o.write && o.verbose) std::cerr << "reproduce: " << note << "\n";
   }
+  return dirs;
+}
 
-  // Plans share some points (Table 2's 16-node runs are also speed-up and fidelity points): each
-  // distinct configuration is simulated once.
+// Plans share some points (Table 2's 16-node runs are also speed-up and fidelity points): each
+// distinct configuration is simulated once; point_run[k] is the run of the plans' k-th point.
+struct DistinctRuns {
   std::vector<RunConfig> cfgs;
-  std::map<std::string, std::size_t> index_of;
   std::vector<std::size_t> point_run;
+};
+
+DistinctRuns distinct_runs(const std::vector<PaperPlan>& plans, const ReproduceOptions& o) {
+  DistinctRuns d;
+  std::map<std::string, std::size_t> index_of;
   for (const auto& p : plans)
     for (const auto& pt : p.points) {
-      const auto [it, fresh] = index_of.emplace(config_key(pt.cfg), cfgs.size());
-      if (fresh) cfgs.push_back(pt.cfg);
-      point_run.push_back(it->second);
+      const auto [it, fresh] = index_of.emplace(config_key(pt.cfg), d.cfgs.size());
+      if (fresh) d.cfgs.push_back(pt.cfg);
+      d.point_run.push_back(it->second);
       // A chart's point records its timeline (which changes no result, so is not in the key).
       for (const auto& g : p.gantt)
-        if (g.key == pt.key && o.plots) cfgs[it->second].timeline = true;
+        if (g.key == pt.key && o.plots) d.cfgs[it->second].timeline = true;
     }
+  return d;
+}
+
+// Every plan's tables under its directory; returns 1 when a point failed or drew a picture other
+// than the sequential renderer's. `summaries` gathers the plans' lines for the top README, and
+// `charts` the reports the space-time diagrams are drawn from.
+int write_plans(const std::vector<PaperPlan>& plans, const std::vector<std::string>& dirs,
+                const std::vector<nlohmann::json>& reps, const std::vector<std::size_t>& point_run,
+                const ReproduceOptions& o, std::string& summaries,
+                std::vector<std::pair<const nlohmann::json*, std::string>>& charts) {
+  int status = 0;
+  std::size_t i = 0;
+  for (const auto& p : plans) {
+    for (const auto& g : p.gantt)
+      for (std::size_t k = 0; k < p.points.size(); ++k)
+        if (p.points[k].key == g.key && reps[point_run[i + k]].contains("timeline"))
+          charts.push_back(
+              {&reps[point_run[i + k]], dirs[std::size_t(&p - plans.data())] + "/" + g.file});
+    Reports r;
+    for (const auto& pt : p.points) {
+      const auto& rep = reps[point_run[i++]];
+      if (rep.value("status", "") == "error") {
+        std::cerr << "reproduce: " << (p.name.empty() ? "fidelity" : p.name) << " point " << pt.key
+                  << " failed: " << rep.value("error", "?") << "\n";
+        status = 1;
+      } else if (ok(rep) && rep["image"].value("identical_to_sequential", nlohmann::json(true)) ==
+                                false) { // null: no picture drawn
+        std::cerr << "reproduce: " << p.name << " point " << pt.key
+                  << ": image differs from the sequential renderer's\n";
+        status = 1;
+      }
+      r[pt.key] = rep;
+    }
+    const std::string& dir = dirs[std::size_t(&p - plans.data())];
+    std::filesystem::create_directories(dir);
+    summaries += p.write(r, dir);
+    if (!p.name.empty()) {
+      name_plots_in(dir + "/README.md", o.plot_format);
+      append_provenance(dir + "/README.md");
+    }
+  }
+  return status;
+}
+
+// The end of the job: the plots waited for, where the host's CPU went, the whole time.
+void finish_reproduce(const ReproduceOptions& o, std::optional<BackgroundPlots>& plots,
+                      const std::optional<BackgroundJob>& calibration,
+                      const SimulationsCost& sims_cost, std::size_t chart_count,
+                      std::chrono::steady_clock::time_point t0) {
+  if (plots) {
+    if (o.verbose)
+      std::cerr << "reproduce: drawing the plots and " << chart_count << " space-time diagrams\n";
+    // Without matplotlib the script said so in one line; the tables stand without their plots.
+    if (plots->wait() == PlotOutcome::failed)
+      std::cerr << "reproduce: plots not drawn (scripts/plot_results.py failed; it needs "
+                   "python3-matplotlib, which scripts/setup.sh installs)\n";
+  }
+  if (o.verbose)
+    std::cerr << host_cost_line(sims_cost, calibration ? &calibration->cost() : nullptr,
+                                plots ? &plots->cost() : nullptr);
+  // The whole job's time, plots included.
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  if (o.verbose) std::cerr << "reproduce: wrote " << o.out << "/ in " << fixed(wall, 1) << " s\n";
+}
+
+} // namespace
+
+int reproduce(const ReproduceOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (o.write) prepare_output_dir(o.out); // before anything runs
+  std::vector<PaperPlan> plans = plans_of(o);
+  const bool all = o.papers.empty();
+  std::string kept;
+  const std::vector<std::string> dirs = plan_directories(o, plans, kept);
+
+  auto [cfgs, point_run] = distinct_runs(plans, o);
   if (o.verbose && o.write)
     std::cerr << "reproduce: " << cfgs.size() << " simulations, " << o.jobs << " at a time\n";
   const auto progress = o.verbose && o.write ? progress_printer("reproduce", cfgs.size())
@@ -313,39 +404,9 @@ int reproduce(const ReproduceOptions& o) {
   if (!o.write) return 0;
   const SimulationsCost sims_cost = simulations_cost(reps);
 
-  int status = 0;
-  std::size_t i = 0;
   std::string summaries;
   std::vector<std::pair<const nlohmann::json*, std::string>> charts;
-  for (const auto& p : plans) {
-    for (const auto& g : p.gantt)
-      for (std::size_t k = 0; k < p.points.size(); ++k)
-        if (p.points[k].key == g.key && reps[point_run[i + k]].contains("timeline"))
-          charts.push_back(
-              {&reps[point_run[i + k]], dirs[std::size_t(&p - plans.data())] + "/" + g.file});
-    Reports r;
-    for (const auto& pt : p.points) {
-      const auto& rep = reps[point_run[i++]];
-      if (rep.value("status", "") == "error") {
-        std::cerr << "reproduce: " << (p.name.empty() ? "fidelity" : p.name) << " point " << pt.key
-                  << " failed: " << rep.value("error", "?") << "\n";
-        status = 1;
-      } else if (ok(rep) && rep["image"].value("identical_to_sequential", nlohmann::json(true)) ==
-                                false) { // null: no picture drawn
-        std::cerr << "reproduce: " << p.name << " point " << pt.key
-                  << ": image differs from the sequential renderer's\n";
-        status = 1;
-      }
-      r[pt.key] = rep;
-    }
-    const std::string& dir = dirs[std::size_t(&p - plans.data())];
-    std::filesystem::create_directories(dir);
-    summaries += p.write(r, dir);
-    if (!p.name.empty()) {
-      name_plots_in(dir + "/README.md", o.plot_format);
-      append_provenance(dir + "/README.md");
-    }
-  }
+  const int status = write_plans(plans, dirs, reps, point_run, o, summaries, charts);
   if (plots) {
     // The plots of what this run wrote: a directory kept because it holds more (the --full
     // tables) keeps its plots too, drawn by the run that wrote its tables.
@@ -372,20 +433,7 @@ int reproduce(const ReproduceOptions& o) {
     append_provenance(o.out + "/README.md");
   }
 
-  if (plots) {
-    if (o.verbose)
-      std::cerr << "reproduce: drawing the plots and " << chart_count << " space-time diagrams\n";
-    // Without matplotlib the script said so in one line; the tables stand without their plots.
-    if (plots->wait() == PlotOutcome::failed)
-      std::cerr << "reproduce: plots not drawn (scripts/plot_results.py failed; it needs "
-                   "python3-matplotlib, which scripts/setup.sh installs)\n";
-  }
-  if (o.verbose)
-    std::cerr << host_cost_line(sims_cost, calibration ? &calibration->cost() : nullptr,
-                                plots ? &plots->cost() : nullptr);
-  // The whole job's time, plots included.
-  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (o.verbose) std::cerr << "reproduce: wrote " << o.out << "/ in " << fixed(wall, 1) << " s\n";
+  finish_reproduce(o, plots, calibration, sims_cost, chart_count, t0);
   return status;
 }
 
