@@ -681,6 +681,12 @@ def sweep_x(rows_, x):
     return value if all(value(r) is not None for r in rows_) else None
 
 
+def factor_axis(rs, x):
+    """Whether the what-if x is given as factors of the machine's own figure (--latency x0.1)."""
+    given = [r[x] for r in rs if r.get(x)]
+    return bool(given) and all(v.startswith("x") for v in given)
+
+
 def machine_value(doc, x):
     """The machine's own value of the what-if flag x: 1 for a scale, else the model's figure in a
     report where x is not in force; None when no report shows it."""
@@ -793,7 +799,8 @@ def sweep(path, x, y, out):
                 any_oom, any_band = any_oom or oom, any_band or band
         extra = sweep_references(ax, x, y, xval, rs, doc)
         sweep_axes_scale(ax, x, xval, rs)
-        ax.set_xlabel(FLAG_LABELS.get(x, x))
+        ax.set_xlabel(f"{x}: factor of the machine's own" if factor_axis(rs, x)
+                      else FLAG_LABELS.get(x, x))
         ax.grid(alpha=0.3)
         if value is not None:
             ax.set_title(f"{panel_flag}={short_value(panel_flag, value)}", fontsize=9.5)
@@ -834,7 +841,7 @@ def sweep_references(ax, x, y, xval, rs, doc):
         handles.append(Line2D([], [], color="k", ls=":", lw=0.9,
                               label="ideal (speed-up = P)" if y == "speedup" else
                               "ideal (efficiency 1)"))
-    own = machine_value(doc, x) if xval else None
+    own = (1.0 if factor_axis(rs, x) else machine_value(doc, x)) if xval else None
     if own is not None and own > 0:
         ax.axvline(own, color="0.35", ls="--", lw=0.9, label="_machine")
         handles.append(Line2D([], [], color="0.35", ls="--", lw=0.9,

@@ -322,6 +322,17 @@ for r, a in zip(rel, ab):
     assert a["latency_factor"] == "" and float(a["latency_s"]) in (27.5e-6, 275e-6), a
 EOF
 expect sweep-relative-equals-absolute $?
+# A relative what-if axis: the factors on x, named so, and the machine's own value (x1) marked.
+/usr/bin/python3 scripts/plot_results.py --units "$("$zcube" units --json)" --describe \
+  "$tmp/rd.json" --sweep "$tmp/rel/sweep.csv" latency virtual_s "$tmp/rel/rel.png" &&
+  /usr/bin/python3 - "$tmp/rd.json" <<'EOF'
+import json, sys
+f = json.load(open(sys.argv[1]))[0]
+a = f["axes"][0]
+assert a["xlabel"] == "latency: factor of the machine's own", a
+assert "the machine's own value" in f["legend"], f["legend"]
+EOF
+expect sweep-plot-relative-axis $?
 usage_error sweep-relative-malformed "--latency 'x': expected" "$zcube" sweep --latency x,x1 \
   --out "$tmp/bad"
 usage_error run-relative-out-of-range "--latency 'x1e+08" "$zcube" run --latency x1e8 --size 8x8
