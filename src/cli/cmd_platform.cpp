@@ -77,7 +77,7 @@ static int cmd_platform(std::vector<std::string> args) {
       command += " --" + k + " " + v;
     }
   const RunConfig c = config_from_flags(flags, "");
-  if (c.machine.ends_with(".xml"))
+  if (is_platform_file(c.machine))
     throw UsageError("--machine: expected ipsc2, ipsc860 or volvox (a built-in model)");
   PlatformEdits pe;
   pe.cpu_scale = c.what_ifs.cpu_scale();

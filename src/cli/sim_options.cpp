@@ -158,7 +158,7 @@ void BatchSimGridFlags::apply() const {
 std::map<std::string, std::string> SimFlags::flags() const {
   auto m = given_flags(values);
   // A platform .xml states its own node count and topology: a command's default does not apply.
-  const bool xml = m.count("machine") && m.at("machine").ends_with(".xml");
+  const bool xml = m.count("machine") && is_platform_file(m.at("machine"));
   for (const auto& [k, v] : defaults)
     if (!xml) m.emplace(k, v);
   return m;

@@ -111,4 +111,9 @@ const std::vector<std::string>& machine_names();
 // The built-in model of a machine; UsageError for an unknown name.
 const MachineSpec& machine_spec(const std::string& name);
 
+// Whether `machine` (a --machine argument) names a platform file rather than a built-in machine.
+inline bool is_platform_file(const std::string& machine) {
+  return machine.size() > 4 && machine.ends_with(".xml");
+}
+
 } // namespace zc

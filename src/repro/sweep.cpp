@@ -204,7 +204,7 @@ bool renders_on_node0_alone(const std::string& algorithm) {
 
 bool on_platform_file(const std::map<std::string, std::string>& values) {
   const auto m = values.find("machine");
-  return m != values.end() && m->second.ends_with(".xml");
+  return m != values.end() && is_platform_file(m->second);
 }
 
 // A platform file states its node count: there the point runs on one node only if its algorithm

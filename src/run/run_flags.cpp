@@ -90,7 +90,7 @@ void apply_run_flags(const std::map<std::string, std::string>& v, const std::str
   c.machine = get("machine");
   c.topology = parse_topology(get("topology"));
   c.fidelity = parse_fidelity(get("fidelity"));
-  const bool xml = c.machine.ends_with(".xml");
+  const bool xml = is_platform_file(c.machine);
   c.nodes = v.count("nodes") || !xml ? parse_int(get("nodes"), "nodes") : 0; // 0: the file's
   if (!xml) check_node_count(c.topology, c.nodes);
   if (xml && v.count("topology"))
@@ -120,7 +120,7 @@ WhatIfs what_ifs_of(const std::map<std::string, std::string>& v, const RunConfig
   WhatIfs w;
   for (const auto& spec : what_if_specs())
     if (v.count(spec.flag)) w.set(spec.flag, parse_what_if(spec, v.at(spec.flag)));
-  if (!c.machine.ends_with(".xml") && !w.empty()) {
+  if (!is_platform_file(c.machine) && !w.empty()) {
     MachineFigures f = machine_figures(machine_spec(c.machine), 1);
     apply_what_ifs(w, f);
   }
@@ -158,7 +158,7 @@ RunConfig config_from_flags(const std::map<std::string, std::string>& v, const s
     if (v.count(s.name)) c.options.values[s.name] = v.at(s.name);
   // The algorithm and its options are checked here, so a bad combination fails only its point.
   validate_options(find_algorithm(c.algorithm), c.options,
-                   c.machine.ends_with(".xml") || c.topology == Topology::Cube);
+                   is_platform_file(c.machine) || c.topology == Topology::Cube);
   return c;
 }
 

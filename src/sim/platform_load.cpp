@@ -74,9 +74,6 @@ void load_platform_text(sg::Engine& e, const std::string& xml, const std::string
   ::close(fd);
 }
 
-bool is_platform_file(const std::string& machine) {
-  return machine.size() > 4 && machine.ends_with(".xml");
-}
 
 namespace {
 

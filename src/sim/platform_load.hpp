@@ -36,8 +36,6 @@ void declare_platform_flags();
 void load_platform_text(simgrid::s4u::Engine& e, const std::string& xml, const std::string& label);
 void load_platform_file(simgrid::s4u::Engine& e, const std::string& path);
 
-// Whether `machine` (a --machine argument) names a platform file rather than a built-in machine.
-bool is_platform_file(const std::string& machine);
 
 // The checks load_platform_file makes before SimGrid reads the file (InputError naming the file,
 // the line and the reason): the grammar zcube models (sim/platform_grammar.hpp), the declared
