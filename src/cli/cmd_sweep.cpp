@@ -1,11 +1,6 @@
 // zcube sweep: a design (repro/sweep_design.hpp) over list-valued run flags, each point its own
 // simulation process (repro/sweep.hpp), with a CSV, a JSON and a plot of the swept quantity.
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -22,6 +17,7 @@
 #include "repro/simulate.hpp"
 #include "repro/sweep.hpp"
 #include "repro/sweep_design.hpp"
+#include "repro/table.hpp"
 #include "run/batch.hpp"
 #include "util/error.hpp"
 #include "util/output_file.hpp"
@@ -31,8 +27,6 @@
 #include "mpi/mpi_session.hpp"
 #include "mpi/sharded_batch.hpp"
 #endif
-
-extern char** environ;
 
 namespace zc::cli {
 
@@ -250,12 +244,7 @@ static std::string markdown_table(const nlohmann::json& rows, const SweepOptions
   for (const auto& c : cols)
     if (std::none_of(rows.begin(), rows.end(), [&](const auto& r) { return r.contains(c); }))
       throw UsageError("--table " + c + ": no row has that column");
-  std::string t = "|", rule = "|";
-  for (const auto& c : cols) {
-    t += " " + c + " |";
-    rule += "---|";
-  }
-  t += "\n" + rule + "\n";
+  Table t{cols, {}};
   for (const auto& r : rows) {
     bool keep = true;
     for (const auto& w : o.where) {
@@ -264,29 +253,12 @@ static std::string markdown_table(const nlohmann::json& rows, const SweepOptions
           keep && r.contains(w.substr(0, eq)) && table_cell(r[w.substr(0, eq)]) == w.substr(eq + 1);
     }
     if (!keep) continue;
-    t += "|";
+    std::vector<std::string> cells;
     for (const auto& c : cols)
-      t += " " + table_cell(r.value(c, nlohmann::json(nullptr))) + " |";
-    t += "\n";
+      cells.push_back(table_cell(r.value(c, nlohmann::json(nullptr))));
+    t.add(std::move(cells));
   }
-  return t;
-}
-
-// Whether matplotlib can be imported by the interpreter the plots use.
-static bool plotting_library_present() {
-  std::string py = python_interpreter(), c = "-c", code = "import matplotlib";
-  char* argv[] = {py.data(), c.data(), code.data(), nullptr};
-  posix_spawn_file_actions_t quiet; // its ImportError is ours to say, in one line
-  posix_spawn_file_actions_init(&quiet);
-  posix_spawn_file_actions_addopen(&quiet, 2, "/dev/null", O_WRONLY, 0);
-  pid_t pid = 0;
-  const int rc = posix_spawnp(&pid, argv[0], &quiet, nullptr, argv, environ);
-  posix_spawn_file_actions_destroy(&quiet);
-  if (rc != 0) return false;
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return false;
-  return WIFEXITED(status) && WEXITSTATUS(status) == 0;
+  return t.markdown();
 }
 
 // The plot of the swept quantity; "" when drawn, else why not (a missing plotting library is an
@@ -296,16 +268,18 @@ static std::string draw_sweep_plot(const SweepOptions& o, const nlohmann::json& 
   const std::string plot = o.out + "/sweep." + o.plot_format;
   if (std::none_of(rows.begin(), rows.end(), [](const auto& r) { return r["status"] == "ok"; }))
     return "no point ran: nothing to plot";
+  PlotOutcome outcome = PlotOutcome::failed;
   try { // to a temporary file renamed into place (util/output_file.hpp)
     write_file_atomically(plot, [&](const std::string& tmp) {
-      return run_plot_script(source_root(), {"--format", o.plot_format, "--sweep",
-                                             o.out + "/sweep.csv", o.plot_x, o.plot_y, tmp});
+      outcome = plot_script_outcome(source_root(), {"--format", o.plot_format, "--sweep",
+                                                    o.out + "/sweep.csv", o.plot_x, o.plot_y, tmp});
+      return outcome == PlotOutcome::drawn;
     });
     return "";
   } catch (const std::runtime_error&) { // the script said why on stderr
   }
-  if (!plotting_library_present())
-    return "matplotlib not found (apt install python3-matplotlib): plot not drawn";
+  // The script said so in one line ("matplotlib not found"): not said again.
+  if (outcome == PlotOutcome::library_missing) return "skipped";
   failed = true;
   return "plot not drawn";
 }

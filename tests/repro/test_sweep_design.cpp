@@ -16,11 +16,17 @@ namespace {
 
 const std::string kTeapot = kRoot + "/scenes/teapot.json";
 
-std::string temp_file(const std::string& name, const std::string& text) {
-  const auto p = std::filesystem::temp_directory_path() / ("zcube_sweep_design_" + name);
-  std::ofstream(p) << text;
-  return p.string();
-}
+// A file under the temporary directory, removed when the test ends.
+struct TempFile {
+  std::string path;
+  TempFile(const std::string& name, const std::string& text)
+      : path((std::filesystem::temp_directory_path() / ("zcube_sweep_design_" + name)).string()) {
+    std::ofstream(path) << text;
+  }
+  ~TempFile() { std::filesystem::remove(path); }
+  TempFile(const TempFile&) = delete;
+  TempFile& operator=(const TempFile&) = delete;
+};
 
 } // namespace
 
@@ -45,12 +51,12 @@ TEST(SweepDesign, OneAtATimeVariesOneFlagAroundTheBase) {
 }
 
 TEST(SweepDesign, APointFileGivesItsRowsAndItsAxes) {
-  const auto path = temp_file("points.csv", "algorithm,nodes,latency\n"
-                                            "pair-rs,16,x0.1\n"
-                                            "\n"
-                                            "aapc-hbp, 16 ,275us\n"
-                                            "scanline,1,\n");
-  const PointFile f = read_point_file(path, kTeapot);
+  const TempFile file("points.csv", "algorithm,nodes,latency\n"
+                                    "pair-rs,16,x0.1\n"
+                                    "\n"
+                                    "aapc-hbp, 16 ,275us\n"
+                                    "scanline,1,\n");
+  const PointFile f = read_point_file(file.path, kTeapot);
   ASSERT_EQ(f.points.size(), 3u);
   ASSERT_EQ(f.axes.size(), 3u);
   EXPECT_EQ(f.axes[0].flag, "algorithm");
@@ -71,7 +77,8 @@ TEST(SweepDesign, ABadPointFileNamesItsLine) {
       {"nodes\n", "no points"}};
   for (const auto& [text, want] : bad)
     try {
-      read_point_file(temp_file("bad.csv", text), kTeapot);
+      const TempFile bad_file("bad.csv", text);
+      read_point_file(bad_file.path, kTeapot);
       ADD_FAILURE() << text << " was accepted";
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find(want), std::string::npos) << e.what();
@@ -90,8 +97,8 @@ TEST(SweepDesign, InputsAreCheckedBeforeAnyPointRuns) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("no/such/scene.json"), std::string::npos) << e.what();
   }
-  const auto bad = temp_file("bad_scene.json", "{\"triangles\": [1, 2");
-  EXPECT_THROW(check_point_inputs(expand_sweep({{"scene", {bad}}}, kTeapot)), InputError);
+  const TempFile bad("bad_scene.json", "{\"triangles\": [1, 2");
+  EXPECT_THROW(check_point_inputs(expand_sweep({{"scene", {bad.path}}}, kTeapot)), InputError);
   EXPECT_NO_THROW(check_point_inputs(expand_sweep({{"nodes", {"1", "2"}}}, kTeapot)));
 }
 
