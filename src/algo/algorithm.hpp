@@ -142,6 +142,9 @@ struct Algorithm {
   // Checks of its options against the node count, once the platform is known and before the
   // simulation starts (UsageError), e.g. pingpong's --from and --to.
   std::function<void(const AlgorithmOptions&, int nodes)> check_nodes;
+  // The node whose metrics (NodeContext::metrics) are the run's, at the report's top level; null:
+  // node 0. Each node keeps its own in the report's per_node entries.
+  std::function<int(const AlgorithmOptions&)> metrics_node;
 };
 
 const std::vector<Algorithm>& algorithms();

@@ -41,19 +41,20 @@ static int cmd_pingpong(std::vector<std::string> args) {
   cfg.compare_with_sequential = false;
   cfg.options.values = {{"from", std::to_string(from)}, {"sizes", sizes}};
   if (!to.empty()) cfg.options.values["to"] = to;
-  RunResult r = run_simulation(cfg);
-  attach_paper_figures(r.report);
-  r.report["provenance"] = provenance();
-  if (!report.empty()) write_result_file(report, r.report.dump(2) + "\n");
+  const RunResult r = run_simulation(cfg);
+  nlohmann::json j = report_with_paper_figures(r.report);
+  j["provenance"] = provenance();
+  if (!report.empty()) write_result_file(report, j.dump(2) + "\n");
   if (!r.ok) {
     std::cerr << "zcube: error: " << r.error << "\n";
     return 1;
   }
-  std::cout << "# " << r.report["machine"].get<std::string>() << ", " << r.report["nodes"]
-            << " nodes, " << r.report["topology"].get<std::string>() << ", "
-            << r.report["fidelity"].get<std::string>() << "\n"
+  const RunHeader& h = r.report.header;
+  std::cout << "# " << h.machine << ", " << h.nodes << " nodes, " << h.topology << ", "
+            << h.fidelity << "\n"
             << "# from  to  hops     bytes   one_way_us\n";
-  for (const auto& x : r.report["results"])
+  const NodeRecord& sender = r.report.records.at(std::size_t(r.report.metrics_rank));
+  for (const auto& x : sender.metrics.value("results", nlohmann::json::array()))
     std::cout << std::setw(6) << x["from"].get<int>() << std::setw(4) << x["to"].get<int>()
               << std::setw(6) << x["hops"].get<int>() << std::setw(10)
               << x["bytes"].get<std::uint64_t>() << std::setw(13) << std::fixed

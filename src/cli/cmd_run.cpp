@@ -30,25 +30,6 @@
 
 namespace zc::cli {
 
-// The report fields a paper figure is matched on, known before the run (the scene's own size
-// unless --size overrides it).
-static nlohmann::json report_header(const RunConfig& cfg) {
-  int w = cfg.width, h = cfg.height;
-  if (w <= 0 || h <= 0) {
-    const Scene s = load_scene(cfg.scene_path, LoadOptions{});
-    w = s.width;
-    h = s.height;
-  }
-  return {{"status", "ok"},
-          {"algorithm", cfg.algorithm},
-          {"machine", cfg.machine},
-          {"topology", topology_name(cfg.topology)},
-          {"nodes", cfg.nodes},
-          {"virtual_time_s", 1.0},
-          {"phases", nlohmann::json::array()},
-          {"scene", {{"path", cfg.scene_path}, {"width", w}, {"height", h}}}};
-}
-
 // --trace FILE and --gantt FILE: where the run's timeline goes (none: not recorded).
 struct TimelineOutputs {
   std::string trace, gantt;
@@ -56,12 +37,12 @@ struct TimelineOutputs {
 };
 
 // Writes the report and pictures and prints the summary (rank 0 only under MPI).
-static int finish(RunResult& r, const std::string& report, const std::string& image,
-                  const std::string& depth, const TimelineOutputs& tl) {
-  r.report["provenance"] = provenance();
-  if (!report.empty()) write_result_file(report, r.report.dump(2) + "\n");
-  if (!tl.trace.empty()) write_trace(r.report, tl.trace);
-  if (!tl.gantt.empty() && !draw_gantt(r.report, tl.gantt, source_root())) {
+static int finish(const RunResult& r, nlohmann::json j, const std::string& report,
+                  const std::string& image, const std::string& depth, const TimelineOutputs& tl) {
+  j["provenance"] = provenance();
+  if (!report.empty()) write_result_file(report, j.dump(2) + "\n");
+  if (!tl.trace.empty()) write_trace(j, tl.trace);
+  if (!tl.gantt.empty() && !draw_gantt(j, tl.gantt, source_root())) {
     std::cerr << "zcube: error: --gantt " << tl.gantt << ": scripts/plot_gantt.py failed\n";
     return 1;
   }
@@ -71,7 +52,6 @@ static int finish(RunResult& r, const std::string& report, const std::string& im
   }
   if (!image.empty() && !r.images.empty()) write_png(r.images.back(), image);
   if (!depth.empty() && !r.images.empty()) write_depth_exr(r.images.back(), depth);
-  const auto& j = r.report;
   std::cout << std::setprecision(6) << j["algorithm"].get<std::string>() << " on "
             << j["machine"].get<std::string>() << " (" << j["nodes"]
             << (j["nodes"] == 1 ? " node, " : " nodes, ") << j["topology"].get<std::string>()
@@ -177,9 +157,14 @@ static void check_outputs(RunOutputs& o) {
 // simulation, in its own process and before this one (a forked child must not inherit a SimGrid
 // engine). None when the run matches no such figure.
 static std::optional<double> sequential_time_for_paper(const RunConfig& cfg) {
-  if (cfg.algorithm != "elastic" || cfg.machine != "ipsc860" || // cheap tests before loading
-      !needs_sequential_time(report_header(cfg)))
-    return std::nullopt;
+  const PaperRun run{cfg.algorithm, cfg.machine, topology_name(cfg.topology), cfg.scene_path,
+                     cfg.nodes};
+  const auto picture_size = [&cfg] {
+    if (cfg.width > 0 && cfg.height > 0) return std::pair{cfg.width, cfg.height};
+    const Scene s = load_scene(cfg.scene_path, LoadOptions{});
+    return std::pair{s.width, s.height};
+  };
+  if (!needs_sequential_time(run, picture_size)) return std::nullopt;
   RunConfig seq = cfg;
   seq.algorithm = "sequential";
   seq.nodes = 1;
@@ -194,7 +179,7 @@ static int run_on_mpi([[maybe_unused]] const RunConfig& cfg, [[maybe_unused]] co
 #ifdef ZCUBE_HAVE_MPI
   MpiSession mpi;
   RunResult r = run_mpi(cfg);
-  return mpi.rank() == 0 ? finish(r, o.report, o.image, o.depth, o.tl) : 0;
+  return mpi.rank() == 0 ? finish(r, report_json(r.report), o.report, o.image, o.depth, o.tl) : 0;
 #else
   throw UsageError("--backend mpi: this zcube was built without MPI (scripts/setup.sh installs "
                    "libopenmpi-dev; then rebuild)");
@@ -235,15 +220,14 @@ static int cmd_run(std::vector<std::string> args) {
   const std::optional<double> seq_s = sequential_time_for_paper(cfg);
   RunResult r =
       o.bands.draws > 0 || o.bands.sensitivity ? run_with_bands(cfg, o.bands) : run_simulation(cfg);
-  attach_paper_figures(r.report);
-  if (r.ok && !o.sensitivity_plot.empty() &&
-      !draw_tornado(r.report, o.sensitivity_plot, source_root())) {
+  nlohmann::json j = report_with_paper_figures(r.report);
+  if (r.ok && !o.sensitivity_plot.empty() && !draw_tornado(j, o.sensitivity_plot, source_root())) {
     std::cerr << "zcube: error: --sensitivity-plot " << o.sensitivity_plot
               << ": scripts/plot_tornado.py failed\n";
     return 1;
   }
-  if (r.ok && seq_s) r.report["paper"] = paper_figures_for(r.report, seq_s);
-  return finish(r, o.report, o.image, o.depth, o.tl);
+  if (r.ok && seq_s) j["paper"] = paper_figures_for(j, seq_s);
+  return finish(r, std::move(j), o.report, o.image, o.depth, o.tl);
 }
 
 ZC_COMMAND("run", "simulate an algorithm on a machine model", cmd_run);

@@ -10,8 +10,8 @@ class MpiContext final : public RecordingContext {
 public:
   using RecordingContext::RecordingContext;
   // busy_s is measured as the time not spent in communication calls.
-  NodeRecord record(nlohmann::json rank) const override {
-    NodeRecord r = RecordingContext::record(std::move(rank));
+  NodeRecord record(Recorder who) const override {
+    NodeRecord r = RecordingContext::record(who);
     r.stats.busy_s = std::max(0.0, r.stats.finish_s - r.stats.comm_s);
     if (r.stats.log) r.stats.log = with_compute(*r.stats.log, r.stats.finish_s);
     return r;

@@ -3,7 +3,6 @@
 #include <sys/resource.h>
 
 #include <algorithm>
-#include <chrono>
 #include <iostream>
 
 #include "comm/wire.hpp"
@@ -11,7 +10,7 @@
 #include "mpi/mpi_context.hpp"
 #include "mpi/mpi_session.hpp"
 #include "mpi/premap_heap.hpp"
-#include "scene/load.hpp"
+#include "run/run_steps.hpp"
 #include "util/error.hpp"
 
 namespace zc {
@@ -97,19 +96,13 @@ int mpi_nodes(const RunConfig& cfg, const Algorithm& algo, int world) {
   return P;
 }
 
-// The scene, and the memory a node's buffers will need mapped before the clock starts
-// (mpi/premap_heap.hpp): 24 bytes a pixel hold a full-screen z-buffer and a picture's worth of
-// pixel records at once, and the pictures it delivers stay in memory until the report (12 bytes a
-// pixel of its share).
-Scene load_premapped(const RunConfig& cfg, int P) {
-  LoadOptions lo;
-  lo.width = cfg.width;
-  lo.height = cfg.height;
-  Scene scene = load_scene(cfg.scene_path, lo);
+// The memory a node's buffers will need mapped before the clock starts (mpi/premap_heap.hpp):
+// 24 bytes a pixel hold a full-screen z-buffer and a picture's worth of pixel records at once, and
+// the pictures it delivers stay in memory until the report (12 bytes a pixel of its share).
+void premap_for(const Scene& scene, const RunConfig& cfg, int P) {
   const std::size_t pixels = std::size_t(scene.width) * std::size_t(scene.height);
   const std::size_t frames = std::size_t(std::max(1, cfg.options.frames));
   premap_heap((std::size_t(64) << 20) + 24 * pixels + 12 * pixels * frames / std::size_t(P));
-  return scene;
 }
 
 // A node's memory under --memory (0: no limit): the value, or the machine's own times a factor.
@@ -124,70 +117,52 @@ double node_memory_what_if(const RunConfig& cfg) {
 
 // What the run cost the host, for the report.
 struct HostFigures {
-  std::chrono::steady_clock::time_point wall0;
   long faults = 0;
   double core_share = 1;
 };
 
-// At rank 0: the report from every rank's record and pictures.
-RunResult mpi_report(const RunConfig& cfg, const Algorithm& algo, const Scene& scene, int P,
-                     double total, const std::vector<Bytes>& records,
-                     const std::vector<Bytes>& pictures, const HostFigures& h) {
-  RunResult res;
-  std::vector<NodeRecord> nodes;
-  nlohmann::json processors = nlohmann::json::array();
+// At rank 0: every rank's record and pictures, gathered, as the skeleton's Executed.
+Executed gathered(const RunConfig& cfg, int P, double total, const std::vector<Bytes>& records,
+                  const std::vector<Bytes>& pictures, nlohmann::json& processors) {
+  Executed done;
+  done.machine = "mpi";
+  done.platform = "MPI_COMM_WORLD";
+  done.topology = topology_name(cfg.topology);
+  done.fidelity = "measured";
+  done.nodes = P;
+  done.total_s = total; // measured: the slowest rank's wall-clock time
   for (const auto& b : records) {
     const auto j = nlohmann::json::parse(std::string(b.begin(), b.end()));
-    nodes.push_back(j["record"].get<NodeRecord>());
+    done.records.push_back(j["record"].get<NodeRecord>());
     processors.push_back(j["host"]);
   }
-  std::vector<FrameImage> all;
   for (const auto& b : pictures)
     for (auto& fi : unpack_images(b))
-      all.push_back(std::move(fi));
-
-  nlohmann::json& j = res.report;
-  j["backend"] = "mpi";
-  j["measured"] = true;
-  j["clock"] = MpiComm::clock_name();
-  add_run_header(
-      j, {"mpi", "MPI_COMM_WORLD", topology_name(cfg.topology), "measured", cfg.scene_path, P}, cfg,
-      algo.name, scene);
-  j["processors"] = processors;
-  j["status"] = "ok";
-  j["virtual_time_s"] = total; // measured: the slowest rank's wall-clock time
-  add_node_sections(j, nodes, P, total);
-  add_image_section(j, all, scene, cfg, true, res.images);
-  j["host"] = {{"wall_time_s",
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - h.wall0).count()},
-               {"peak_rss_bytes", peak_rss_bytes()},
-               {"page_faults_timed", h.faults}, // node 0's, between the barrier and its finish
-               {"core_share", h.core_share}};
-  return res;
+      done.images.push_back(std::move(fi));
+  return done;
 }
 
 } // namespace
 
 RunResult run_mpi(const RunConfig& cfg) {
-  HostFigures host;
-  host.wall0 = std::chrono::steady_clock::now();
   int rank = 0, world = 1;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Comm_size(MPI_COMM_WORLD, &world);
-  const Algorithm& algo = cfg.custom ? *cfg.custom : find_algorithm(cfg.algorithm);
-  AlgorithmOptions options = cfg.options;
-  validate_options(algo, options, true);
+  const PreparedRun run = prepare_run(cfg, nullptr, true);
+  const Algorithm& algo = *run.algo;
   const int P = mpi_nodes(cfg, algo, world);
-  const Scene scene = load_premapped(cfg, P);
+  if (algo.check_nodes) algo.check_nodes(run.options, P);
+  premap_for(run.scene(), cfg, P);
 
   NodeStats stats;
   if (cfg.timeline) stats.log = std::make_shared<EventLog>();
   std::vector<FrameImage> images;
   MpiComm::clock_name(); // a bad ZCUBE_MPI_CLOCK is a usage error before anything runs
   MpiComm comm(MPI_COMM_WORLD, P, cfg.topology, stats);
-  MpiContext ctx(comm, stats, scene, options, node_memory_what_if(cfg), images);
+  MpiContext ctx(comm, stats, run.scene(), run.options, node_memory_what_if(cfg), images);
   MPI_Barrier(MPI_COMM_WORLD);
   comm.reset_clock();
+  HostFigures host;
   const long faults0 = minor_faults();
   const double cpu0 = cpu_seconds(), wall0_s = MPI_Wtime();
   try {
@@ -208,14 +183,19 @@ RunResult run_mpi(const RunConfig& cfg) {
   host.core_share = -max_over_ranks(-(wall_s > 0 ? (cpu_seconds() - cpu0) / wall_s : 1.0));
   const double total = max_over_ranks(stats.finish_s);
 
-  const nlohmann::json mine = {
-      {"record", ctx.record(rank == P ? nlohmann::json("srm") : nlohmann::json(rank))},
-      {"host", processor_name()}};
+  const Recorder who = rank == P ? Recorder::host(P) : Recorder::node(rank);
+  const nlohmann::json mine = {{"record", ctx.record(who)}, {"host", processor_name()}};
   const std::string text = mine.dump();
   const auto records = gather_to_root(Bytes(text.begin(), text.end()));
   const auto pictures = gather_to_root(pack_images(images));
   if (rank != 0) return RunResult{};
-  return mpi_report(cfg, algo, scene, P, total, records, pictures, host);
+  Measurement measured{MpiComm::clock_name(), nlohmann::json::array()};
+  RunResult res =
+      finish_run(cfg, run, gathered(cfg, P, total, records, pictures, measured.processors));
+  res.report.measured = std::move(measured);
+  res.report.host.page_faults_timed = host.faults; // node 0's, between the barrier and its finish
+  res.report.host.core_share = host.core_share;
+  return res;
 }
 
 } // namespace zc

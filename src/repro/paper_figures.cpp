@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 
 #include "repro/reproduce.hpp"
 
@@ -49,9 +50,13 @@ const std::vector<CharlesSpeedupFigure>& charles_teapot_speedups() {
 
 namespace {
 
-std::string scene_key(const nlohmann::json& report) {
-  const std::filesystem::path p(report["scene"].value("path", ""));
+std::string scene_key(const std::string& path) {
+  const std::filesystem::path p(path);
   return p.parent_path().filename().string() + "/" + p.stem().string();
+}
+
+std::string scene_key(const nlohmann::json& report) {
+  return scene_key(report["scene"].value("path", ""));
 }
 
 bool is(const nlohmann::json& r, const char* key, const std::string& v) {
@@ -62,14 +67,28 @@ bool sized(const nlohmann::json& r, int n) {
   return r["scene"].value("width", 0) == n && r["scene"].value("height", 0) == n;
 }
 
-const CharlesSpeedupFigure* charles_match(const nlohmann::json& r) {
-  if (!is(r, "algorithm", "elastic") || !is(r, "machine", "ipsc860") ||
-      !is(r, "topology", "cube") || !sized(r, kCharlesTeapotSize) ||
-      scene_key(r) != "charles/teapot")
+// Charles et al.'s speed-up figure of the run, when it is one of theirs; the picture size is
+// asked for last (it may mean loading the scene).
+const CharlesSpeedupFigure* charles_match(const PaperRun& r,
+                                          const std::function<std::pair<int, int>()>& size) {
+  if (r.algorithm != "elastic" || r.machine != "ipsc860" || r.topology != "cube" ||
+      scene_key(r.scene_path) != "charles/teapot")
     return nullptr;
+  const CharlesSpeedupFigure* match = nullptr;
   for (const auto& f : charles_teapot_speedups())
-    if (r.value("nodes", 0) == f.nodes) return &f;
-  return nullptr;
+    if (r.nodes == f.nodes) match = &f;
+  if (!match) return nullptr;
+  const auto [w, h] = size();
+  return w == kCharlesTeapotSize && h == kCharlesTeapotSize ? match : nullptr;
+}
+
+const CharlesSpeedupFigure* charles_match(const nlohmann::json& r) {
+  if (!r.contains("scene")) return nullptr;
+  const PaperRun run{r.value("algorithm", ""), r.value("machine", ""), r.value("topology", ""),
+                     r["scene"].value("path", ""), r.value("nodes", 0)};
+  return charles_match(run, [&r] {
+    return std::pair{r["scene"].value("width", 0), r["scene"].value("height", 0)};
+  });
 }
 
 double rel_error(double predicted, double paper) {
@@ -78,8 +97,9 @@ double rel_error(double predicted, double paper) {
 
 } // namespace
 
-bool needs_sequential_time(const nlohmann::json& report) {
-  return charles_match(report) != nullptr;
+bool needs_sequential_time(const PaperRun& run,
+                           const std::function<std::pair<int, int>()>& picture_size) {
+  return charles_match(run, picture_size) != nullptr;
 }
 
 nlohmann::json paper_figures_for(const nlohmann::json& r, std::optional<double> seq_s) {

@@ -1,8 +1,10 @@
 #pragma once
 // The figures the papers print (docs/index.md cites them), as data: the calibration's targets and
 // the paper column of reports and of `zcube reproduce`. Held-out figures are not here, by design.
+#include <functional>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -40,7 +42,15 @@ constexpr const char* kCharlesTeapotScene = "scenes/charles/teapot.json";
 // scenes/charles/teapot.json). `sequential_time_s`, when given, completes the speed-up figures.
 nlohmann::json paper_figures_for(const nlohmann::json& report,
                                  std::optional<double> sequential_time_s = std::nullopt);
+// What a paper figure is matched on, known before a run.
+struct PaperRun {
+  std::string algorithm, machine, topology, scene_path;
+  int nodes = 0;
+};
 // True when the run matches a speed-up figure, whose prediction needs the sequential time.
-bool needs_sequential_time(const nlohmann::json& report);
+// `picture_size` (width, height) is called only when everything else matches: it may load the
+// scene.
+bool needs_sequential_time(const PaperRun& run,
+                           const std::function<std::pair<int, int>()>& picture_size);
 
 } // namespace zc

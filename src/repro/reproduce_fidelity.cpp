@@ -57,7 +57,7 @@ std::string paper_error(const nlohmann::json& rep) {
 }
 
 // What each run cost the simulator, in its own events (the report's simulation_cost, the same in
-// every run; sim/sim_cost.hpp): the messages the algorithm sent, the transfers SimGrid's bandwidth
+// every run; run/sim_cost.hpp): the messages the algorithm sent, the transfers SimGrid's bandwidth
 // sharing solved (flow), zcube's own network events (circuit), SimGrid's time steps and the
 // actors' switches to SimGrid and back. The host seconds they take are measured apart, by
 // bench/fidelity_cost.py (results/fidelity_cost.csv).

@@ -134,11 +134,13 @@ void prepare_references(const std::vector<RunConfig>& points, int jobs) {
     t.join();
   for (std::size_t i = 0; i < todo.size(); ++i)
     refs.emplace(todo[i], std::move(drawn[i]));
-  set_reference_lookup([](const Scene& scene, int frame, int frames) -> const ReferenceFrame* {
-    const auto& r = reference_cache();
-    const auto it = r.find({&scene, frame, frames});
-    return it == r.end() ? nullptr : &it->second;
-  });
+}
+
+// A reference prepare_references drew (inherited by the batch's forked children), or null.
+const ReferenceFrame* drawn_reference(const Scene& scene, int frame, int frames) {
+  const auto& r = reference_cache();
+  const auto it = r.find({&scene, frame, frames});
+  return it == r.end() ? nullptr : &it->second;
 }
 
 // The set-up of the cached scenes' triangles (raster/setup_cache.hpp), worked out before the batch
@@ -243,6 +245,12 @@ void attach_paper_figures(nlohmann::json& report) {
   if (auto paper = paper_figures_for(report); !paper.empty()) report["paper"] = paper;
 }
 
+nlohmann::json report_with_paper_figures(const Report& report) {
+  nlohmann::json j = report_json(report);
+  attach_paper_figures(j);
+  return j;
+}
+
 namespace {
 std::vector<std::string>& batch_simgrid_args() {
   static std::vector<std::string> a;
@@ -273,6 +281,7 @@ RunConfig with_batch_args(const RunConfig& cfg) {
   RunConfig c = cfg;
   const auto& extra = batch_simgrid_args();
   c.simgrid_args.insert(c.simgrid_args.end(), extra.begin(), extra.end());
+  c.reference_lookup = drawn_reference;
   return c;
 }
 
@@ -301,8 +310,7 @@ nlohmann::json record_point(const RunConfig& cfg, std::vector<std::uint8_t>* tra
   RunResult r = record_simulation(with_batch_args(cfg), cached_scene(cfg), t, &pm);
   if (t && trace) *trace = t->serialize();
   attach_bands(cfg, r, t.get(), pm);
-  attach_paper_figures(r.report);
-  return r.report;
+  return report_with_paper_figures(r.report);
 }
 
 std::optional<nlohmann::json> replay_point(const RunConfig& cfg,
@@ -313,8 +321,7 @@ std::optional<nlohmann::json> replay_point(const RunConfig& cfg,
       replay_simulation(with_batch_args(cfg), cached_scene(cfg), t, nullptr, &pm);
   if (!r) return std::nullopt;
   attach_bands(cfg, *r, t.get(), pm);
-  attach_paper_figures(r->report);
-  return std::move(r->report);
+  return report_with_paper_figures(r->report);
 }
 
 // Record and replay is on unless ZCUBE_REPLAY=0 (every point then runs in full, as a check).
@@ -372,9 +379,7 @@ void check_platform_files(const std::vector<RunConfig>& points) {
 
 nlohmann::json simulate_point(const RunConfig& cfg) {
   if (cfg.band_draws > 0) return record_point(cfg, nullptr);
-  RunResult r = run_simulation(with_batch_args(cfg), cached_scene(cfg));
-  attach_paper_figures(r.report);
-  return r.report;
+  return report_with_paper_figures(run_simulation(with_batch_args(cfg), cached_scene(cfg)).report);
 }
 
 std::vector<nlohmann::json>

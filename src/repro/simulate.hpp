@@ -7,11 +7,14 @@
 #include <nlohmann/json.hpp>
 
 #include "run/batch.hpp"
+#include "run/report.hpp"
 
 namespace zc {
 
 // Adds "paper" (the matching figures and the relative errors) when the report matches any.
 void attach_paper_figures(nlohmann::json& report);
+// The report as JSON (the edge: a file, or a forked child's answer) with those figures attached.
+nlohmann::json report_with_paper_figures(const Report& report);
 
 // SimGrid settings (--cfg=..., --log=...) every point of this process's batches gets after its
 // own: the --cfg/--log of reproduce, regress, calibrate and sweep.

@@ -39,7 +39,7 @@ std::vector<std::uint8_t> CallTrace::serialize() const {
   w.put(std::int32_t(nodes));
   w.put(std::int32_t(topology));
   w.put(std::uint8_t(read_clock));
-  put_string(w, image.dump());
+  put_string(w, nlohmann::json(image).dump());
   w.put(std::uint64_t(ranks.size()));
   for (const auto& r : ranks)
     put_vector(w, r);
@@ -62,7 +62,7 @@ CallTrace CallTrace::parse(const std::vector<std::uint8_t>& bytes) {
   t.nodes = r.get<std::int32_t>();
   t.topology = Topology(r.get<std::int32_t>());
   t.read_clock = r.get<std::uint8_t>() != 0;
-  t.image = nlohmann::json::parse(get_string(r));
+  t.image = nlohmann::json::parse(get_string(r)).get<ImageVerdict>();
   t.ranks.resize(std::size_t(r.get<std::uint64_t>()));
   for (auto& calls : t.ranks)
     calls = get_vector<Call>(r);

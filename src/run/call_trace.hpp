@@ -14,6 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "run/image_check.hpp"
+
 #include "algo/algorithm.hpp"
 #include "machine/topology.hpp"
 #include "util/counters.hpp"
@@ -61,7 +63,7 @@ struct CallTrace {
   std::vector<std::vector<TracedBlock>> blocks;
   std::vector<std::string> metrics; // JSON text
   bool read_clock = false;          // a node read Comm::now: its calls may depend on the times
-  nlohmann::json image;             // the recorded run's "image" section
+  ImageVerdict image;               // the recorded run's pictures, checked
   std::map<std::string, std::uint32_t> string_ids; // while recording
 
   std::uint32_t string_id(const std::string& s);

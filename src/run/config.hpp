@@ -1,7 +1,7 @@
 #pragma once
 // What to run, whatever the backend (SimGrid simulation or MPI processes): the machine with its
-// what-ifs, the algorithm with its options, the scene; and what a run returns, the report
-// of a report and the delivered pictures.
+// what-ifs, the algorithm with its options, the scene; and what a run returns, its report and the
+// delivered pictures.
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,6 +14,8 @@
 #include "machine/uncertainty.hpp"
 #include "raster/framebuffer.hpp"
 #include "run/fidelity.hpp"
+#include "run/image_check.hpp"
+#include "run/report.hpp"
 #include "run/what_if.hpp"
 
 namespace zc {
@@ -30,6 +32,9 @@ struct RunConfig {
   std::string scene_path;
   int width = 0, height = 0;           // > 0 overrides the scene's size
   bool compare_with_sequential = true; // render on the host and compare images
+  // Where the references already drawn are (a batch draws each once before it forks); empty:
+  // the run draws its own.
+  ReferenceLookup reference_lookup;
   // Passed to SimGrid after zcube's own settings, so they win: "--cfg=name:value", "--log=...".
   std::vector<std::string> simgrid_args;
   bool timeline = false; // record every node's events (the report's "timeline"; --trace, --gantt)
@@ -45,7 +50,7 @@ struct RunConfig {
 };
 
 struct RunResult {
-  nlohmann::json report;
+  Report report;                   // report_json(report) at the edge
   std::vector<Framebuffer> images; // one per frame (node-delivered)
   bool ok = true;                  // false: the run failed (e.g. out of node memory)
   std::string error;

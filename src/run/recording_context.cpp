@@ -62,9 +62,9 @@ void RecordingContext::deliver_rows(int frame, Framebuffer rows) {
   images_.push_back({frame, std::move(rows), true});
 }
 
-NodeRecord RecordingContext::record(nlohmann::json rank) const {
+NodeRecord RecordingContext::record(Recorder who) const {
   NodeRecord r;
-  r.rank = std::move(rank);
+  r.who = who;
   r.stats = stats_;
   r.phase_order = phase_order_;
   r.phase_totals = phase_totals_;

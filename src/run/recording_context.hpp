@@ -42,7 +42,7 @@ public:
   // What this node recorded, for the report. Operations charged inside each phase are kept per
   // phase (the innermost open one; "" outside every phase): with the phase durations, the linear
   // model the calibration fits (time = counts x costs + waiting).
-  virtual NodeRecord record(nlohmann::json rank) const;
+  virtual NodeRecord record(Recorder who) const;
 
 protected:
   // The cost of charged work on this backend.

@@ -1,122 +1,93 @@
 #pragma once
-// The report (docs/user-guide.md, "One run") from what each node recorded: shared by the SimGrid
-// backend (virtual times) and any other backend (measured times), so both write the same schema.
-#include <functional>
+// The report of one run (docs/user-guide.md, "One run"), typed: built by the run's last step
+// (run/run_steps.hpp) from what each node recorded, the same for the SimGrid backend (virtual
+// times) and the MPI backend (measured times), and written to JSON only at the edge
+// (report_json), where a file is written or a forked child hands it back.
+#include <cstddef>
 #include <map>
-#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
-#include "raster/framebuffer.hpp"
-#include "run/config.hpp"
-#include "run/event_log.hpp"
-#include "scene/scene.hpp"
-#include "util/counters.hpp"
+#include "machine/machine.hpp"
+#include "run/image_check.hpp"
+#include "run/node_record.hpp"
+#include "run/sim_cost.hpp"
+#include "run/what_if.hpp"
 
 namespace zc {
 
-// What a node sent: the bytes the modelled machine is charged (its program's records, comm.hpp)
-// and the bytes of zcube's payloads.
-struct Traffic {
-  std::uint64_t charged_bytes = 0, payload_bytes = 0, messages = 0;
-  Traffic& operator+=(const Traffic& o) {
-    charged_bytes += o.charged_bytes;
-    payload_bytes += o.payload_bytes;
-    messages += o.messages;
-    return *this;
-  }
-};
-void to_json(nlohmann::json& j, const Traffic& t);
-void from_json(const nlohmann::json& j, Traffic& t);
-
-// Counters of one node's run, whatever the backend.
-// What every send, receive and charge updates comes first, in one host cache line: a simulation
-// of many nodes switches between them at every message.
-struct alignas(64) NodeStats {
-  double busy_s = 0, comm_s = 0;
-  std::uint64_t bytes_sent = 0, messages = 0; // bytes_sent: charged bytes
-  std::uint64_t payload_bytes_sent = 0;
-  // Bumped by every set_phase: a backend that keeps the current phase's phase_traffic entry
-  // between sends checks this counter instead of comparing the name on every send.
-  std::uint64_t phase_changes = 0;
-  std::shared_ptr<EventLog> log; // the node's timeline; null unless one was asked for
-  double finish_s = 0;
-  std::string phase; // the innermost open phase ("" outside every phase); set by set_phase
-  std::map<std::string, Traffic> phase_traffic; // what was sent in each phase
-  double memory = 0, peak_memory = 0;
-  bool timed = false;       // the node started the paper's timed region (start_timed_region)
-  double timed_start_s = 0; // when
-  bool timed_ended = false; // the node ended it (end_timed_region) before finishing
-  double timed_end_s = 0;   // when
-  // The end of the node's timed region: end_timed_region's time, else the node's finish.
-  double timed_until_s() const { return timed_ended ? timed_end_s : finish_s; }
-  void set_phase(const std::string& name) {
-    phase = name;
-    ++phase_changes;
-  }
-  // A send of `payload` bytes charged as `charged` (the backends call it).
-  void count_send(std::size_t payload, std::size_t charged) {
-    bytes_sent += charged;
-    payload_bytes_sent += payload;
-    ++messages;
-    phase_traffic[phase] += Traffic{charged, payload, 1};
-  }
-};
-
-// A picture (or, partial, rows of one) handed over by a node.
-struct FrameImage {
-  int frame;
-  Framebuffer image;
-  bool partial = false; // rows of the frame (deliver_rows), pasted together after the run
-};
-
-// What one node (or the host computer, rank "srm") recorded.
-struct NodeRecord {
-  nlohmann::json rank; // int, or "srm"
-  NodeStats stats;
-  std::vector<std::string> phase_order;
-  std::map<std::string, double> phase_totals;
-  std::map<std::string, Counters> phase_work;
-  Counters work;
-  nlohmann::json metrics = nlohmann::json::object();
-};
-void to_json(nlohmann::json& j, const NodeRecord& r);
-void from_json(const nlohmann::json& j, NodeRecord& r);
-
-// The report's header: what ran where ("machine", "platform", "nodes", "topology", "fidelity",
-// "algorithm", "options", "frames", "scene"), whatever the backend.
+// What ran where: "machine", "platform", "nodes", "topology", "fidelity", "algorithm", "options"
+// (every option, the defaults included: a report says which variant ran), "frames", "scene".
 struct RunHeader {
-  std::string machine, platform, topology, fidelity, scene_path;
+  std::string machine, platform, topology, fidelity, algorithm;
   int nodes = 0;
+  nlohmann::json options = nlohmann::json::object();
+  int frames = 1;
+  struct SceneSummary {
+    std::string path;
+    std::size_t triangles = 0, vertices = 0;
+    int width = 0, height = 0;
+  } scene;
 };
-void add_run_header(nlohmann::json& j, const RunHeader& h, const RunConfig& cfg,
-                    const std::string& algorithm, const Scene& scene);
 
-// "phases", "per_node", "communication", "counters", "load_imbalance" and the algorithm's metrics
-// (node 0's, merged at the top level). `nodes` holds the P nodes in rank order, then the host if
-// it ran; total_s is the run's time (for idle_s). With the nodes' event logs, also "timeline".
-void add_node_sections(nlohmann::json& j, const std::vector<NodeRecord>& nodes, int P,
-                       double total_s);
-
-// What an image is compared with: the sequential renderer's picture of a scene at one frame of a
-// run of `frames` frames, as its colour hash and its depth map.
-struct ReferenceFrame {
-  std::string sha256;
-  std::vector<float> depth;
+// The machine a simulated run was priced on (what-ifs and draw applied): the report's "model"
+// and "what_if".
+struct ModelSection {
+  NetworkParams net;
+  double node_memory_bytes = 0, os_resident_bytes = 0;
+  CostTable node0_cpu; // every counted operation's cost on node 0 (docs/machines.md)
+  WhatIfs what_ifs;    // the what-ifs in force (none: empty)
 };
-ReferenceFrame reference_frame(const Scene& scene, int frame, int frames);
-// Where add_image_section finds a reference already drawn (by the process that forks a batch of
-// simulations of the same scene, so that each draws it once): null when it has none, and then the
-// image section draws it itself. The lookup is the process's (inherited by forked children).
-using ReferenceLookup = std::function<const ReferenceFrame*(const Scene&, int frame, int frames)>;
-void set_reference_lookup(ReferenceLookup lookup);
 
-// "image": rows pasted into frames, hashes, and the comparison with the sequential renderer
-// (when cfg.compare_with_sequential). The frames are moved to `out` in frame order.
-void add_image_section(nlohmann::json& j, std::vector<FrameImage>& images, const Scene& scene,
-                       const RunConfig& cfg, bool ok, std::vector<Framebuffer>& out);
+// What the run cost the host computer zcube ran on (the report's "host").
+struct HostUse {
+  double wall_time_s = 0;
+  std::size_t peak_rss_bytes = 0;
+  std::optional<long> page_faults_timed; // measured runs: node 0's, in the timed part
+  std::optional<double> core_share;      // measured runs: the lowest rank's CPU/wall share
+};
+
+// A run on real processors: its clock and the processors each rank ran on.
+struct Measurement {
+  std::string clock;
+  nlohmann::json processors = nlohmann::json::array();
+};
+
+struct Report {
+  RunHeader header;
+  std::string status = "ok"; // "ok", "out_of_memory" or "error"
+  std::string error;
+  double virtual_time_s = 0; // measured runs: the slowest rank's wall-clock time
+  // The P nodes in rank order, then the host computer when it ran.
+  std::vector<NodeRecord> records;
+  // The node whose algorithm metrics are the run's (Algorithm::metrics_node; node 0 by default):
+  // they are written at the report's top level.
+  int metrics_rank = 0;
+  std::optional<ModelSection> model;      // simulated runs
+  std::optional<SimCost> simulation_cost; // simulated runs
+  std::optional<Measurement> measured;    // measured runs
+  ImageVerdict image;
+  HostUse host;
+  // Priced after the run from draws of the uncertainty model (sim/bands.hpp): "bands",
+  // "sensitivity" and each phase's band, by phase name. Null or empty: none.
+  nlohmann::json bands, sensitivity;
+  std::map<std::string, nlohmann::json> phase_bands;
+
+  bool ok() const { return status == "ok"; }
+  int nodes() const { return header.nodes; }
+};
+
+// The phases in the order the nodes first entered them.
+std::vector<std::string> phase_names(const std::vector<NodeRecord>& records);
+// The paper's timed region (docs/papers.md): the longest (end - start) over the nodes that
+// started one; none when no node did (the whole run is timed).
+std::optional<double> timed_region_s(const Report& r);
+
+// The report as JSON: the one place its keys are spelt.
+nlohmann::json report_json(const Report& r);
 
 // The host process's peak resident set (the report's host.peak_rss_bytes).
 std::size_t peak_rss_bytes();

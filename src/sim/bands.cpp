@@ -43,6 +43,21 @@ Figures figures_of(const nlohmann::json& j) {
   return f;
 }
 
+// The same of a report before it is written.
+Figures figures_of(const Report& r) {
+  Figures f;
+  f.ok = r.ok();
+  if (!f.ok) return f;
+  f.virtual_time_s = r.virtual_time_s;
+  f.timed_s = timed_region_s(r).value_or(-1.0);
+  for (const NodeRecord& rec : r.records)
+    for (const auto& [name, t] : rec.phase_totals) {
+      double& m = f.phases[name]; // 0 at first, as the report's max_s starts
+      m = std::max(m, t);
+    }
+  return f;
+}
+
 // The largest relative difference between two sets of figures (the retimer against the run).
 double disagreement(const Figures& a, const Figures& b) {
   const auto rel = [](double x, double y) {
@@ -87,13 +102,14 @@ std::vector<double> finite(const std::vector<double>& v) {
 
 // Writes the band of every figure from the draws' figures into the report. `values` keep one
 // entry a draw, in draw order, null where the draw failed, so that a study pairs its runs' draws.
-void write_bands(nlohmann::json& report, const std::vector<Figures>& draws, nlohmann::json b) {
+void write_bands(Report& report, const std::vector<Figures>& draws, nlohmann::json b) {
   const double none = std::nan("");
   std::vector<double> vt, ts;
   std::map<std::string, std::vector<double>> ph;
   int failed = 0;
-  for (const auto& p : report["phases"])
-    ph[p["name"].get<std::string>()];
+  const std::vector<std::string> phases = phase_names(report.records);
+  for (const auto& name : phases)
+    ph[name];
   for (const Figures& f : draws) {
     failed += !f.ok;
     vt.push_back(f.ok ? f.virtual_time_s : none);
@@ -107,7 +123,7 @@ void write_bands(nlohmann::json& report, const std::vector<Figures>& draws, nloh
   if (finite(vt).empty()) {
     b["method"] = "unavailable";
     b["why"] = "no draw ran to its end";
-    report["bands"] = std::move(b);
+    report.bands = std::move(b);
     return;
   }
   b["virtual_time_s"] = quantiles(finite(vt));
@@ -116,13 +132,13 @@ void write_bands(nlohmann::json& report, const std::vector<Figures>& draws, nloh
     b["timed_s"] = quantiles(finite(ts));
     b["values"]["timed_s"] = ts;
   }
-  for (auto& p : report["phases"]) {
-    const auto& v = ph.at(p["name"].get<std::string>());
+  for (const auto& name : phases) {
+    const auto& v = ph.at(name);
     if (finite(v).empty()) continue;
-    p["bands"] = quantiles(finite(v));
-    b["values"]["phases"][p["name"].get<std::string>()] = v;
+    report.phase_bands[name] = quantiles(finite(v));
+    b["values"]["phases"][name] = v;
   }
-  report["bands"] = std::move(b);
+  report.bands = std::move(b);
 }
 
 nlohmann::json band_header(const RunConfig& cfg, const BandsRequest& req,
@@ -157,14 +173,14 @@ nlohmann::json sensitivity(const CallTrace& t, const RetimeMachine& m, double st
 
 } // namespace
 
-void mark_unavailable(nlohmann::json& report, const BandsRequest& req, const std::string& why) {
-  if (req.draws > 0 && !report.contains("bands"))
-    report["bands"] = {{"method", "unavailable"}, {"why", why}, {"draws", req.draws}};
-  if (req.sensitivity && !report.contains("sensitivity"))
-    report["sensitivity"] = {{"method", "unavailable"}, {"why", why}};
+void mark_unavailable(Report& report, const BandsRequest& req, const std::string& why) {
+  if (req.draws > 0 && report.bands.is_null())
+    report.bands = {{"method", "unavailable"}, {"why", why}, {"draws", req.draws}};
+  if (req.sensitivity && report.sensitivity.is_null())
+    report.sensitivity = {{"method", "unavailable"}, {"why", why}};
 }
 
-std::string add_bands(nlohmann::json& report, const CallTrace& trace, const PlatformModel& pm,
+std::string add_bands(Report& report, const CallTrace& trace, const PlatformModel& pm,
                       const RunConfig& cfg, const BandsRequest& req) {
   const RetimeMachine m = retime_machine(pm, cfg);
   std::string why = retimable(m);
@@ -195,7 +211,7 @@ std::string add_bands(nlohmann::json& report, const CallTrace& trace, const Plat
     b["reordered_draws"] = reordered;
     write_bands(report, draws, std::move(b));
   }
-  if (req.sensitivity) report["sensitivity"] = sensitivity(trace, m, req.step);
+  if (req.sensitivity) report.sensitivity = sensitivity(trace, m, req.step);
   return "";
 }
 
@@ -229,14 +245,14 @@ std::vector<Figures> simulated_draws(const RunConfig& cfg, const BandsRequest& r
                         std::shared_ptr<CallTrace> t;
                         RunResult r = record_simulation(c, nullptr, t);
                         if (t && trace) *trace = t->serialize();
-                        return r.report;
+                        return report_json(r.report);
                       },
                       [](const RunConfig& c,
                          const std::vector<std::uint8_t>& bytes) -> std::optional<nlohmann::json> {
                         auto t = std::make_shared<const CallTrace>(CallTrace::parse(bytes));
                         auto r = replay_simulation(c, nullptr, t);
                         if (!r) return std::nullopt;
-                        return std::move(r->report);
+                        return report_json(r->report);
                       }};
   TraceStore traces;
   std::vector<Figures> out;

@@ -23,12 +23,12 @@ struct CallTrace;
 struct PlatformModel;
 // Marks the bands and sensitivities `req` asks for (those the report has not got) unavailable,
 // and why.
-void mark_unavailable(nlohmann::json& report, const BandsRequest& req, const std::string& why);
+void mark_unavailable(Report& report, const BandsRequest& req, const std::string& why);
 // Adds the bands and sensitivities of `req` to `report`, the report of the run that recorded
 // `trace` on `pm` (its machine after what-ifs), by retiming; where it cannot (a machine the
 // retimer does not cover, or a retimer that disagrees with the run), marks them unavailable and
 // returns why ("" when it did).
-std::string add_bands(nlohmann::json& report, const CallTrace& trace, const PlatformModel& pm,
+std::string add_bands(Report& report, const CallTrace& trace, const PlatformModel& pm,
                       const RunConfig& cfg, const BandsRequest& req);
 
 // Like run_simulation, once per process; the draws that need a simulation of their own fork.

@@ -17,10 +17,10 @@
 
 #include <simgrid/s4u.hpp>
 
+#include "run/sim_cost.hpp"
 #include "sim/inbox.hpp"
 #include "sim/network_model.hpp"
 #include "sim/rank_waits.hpp"
-#include "sim/sim_cost.hpp"
 #include "sim/sim_network.hpp"
 #include "sim/transit.hpp"
 #include "sim/wakeups.hpp"

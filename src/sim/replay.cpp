@@ -198,7 +198,7 @@ RunResult record_simulation(const RunConfig& cfg, const Scene* preloaded,
   if (!r.ok || trace->read_clock)
     trace = nullptr;
   else
-    trace->image = r.report["image"];
+    trace->image = r.report.image;
   return r;
 }
 
@@ -214,7 +214,7 @@ std::optional<RunResult> replay_simulation(const RunConfig& cfg, const Scene* pr
     if (why) *why = divergence();
     return std::nullopt;
   }
-  if (r.ok) r.report["image"] = trace->image;
+  if (r.ok) r.report.image = trace->image;
   return r;
 }
 

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "comm/comm.hpp"
+#include "run/sim_cost.hpp"
 #include "sim/retime.hpp"
-#include "sim/sim_cost.hpp"
 #include "sim/sim_network.hpp"
 
 namespace zc::retiming {

@@ -11,7 +11,7 @@
 
 #include "machine/machine.hpp"
 #include "run/fidelity.hpp"
-#include "sim/sim_cost.hpp"
+#include "run/sim_cost.hpp"
 
 namespace zc {
 

@@ -4,7 +4,6 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -15,18 +14,15 @@
 #include <simgrid/s4u.hpp>
 #include <xbt/config.hpp>
 
-#include "geometry/camera_path.hpp"
 #include "machine/clock_limits.hpp"
 #include "machine/platform_xml.hpp"
 #include "machine/units.hpp"
-#include "raster/image_io.hpp"
-#include "raster/renderer.hpp"
 #include "run/batch.hpp"
 #include "run/report.hpp"
-#include "scene/load.hpp"
+#include "run/run_steps.hpp"
+#include "run/sim_cost.hpp"
 #include "sim/platform_load.hpp"
 #include "sim/sim_context.hpp"
-#include "sim/sim_cost.hpp"
 #include "util/error.hpp"
 #include "util/input_file.hpp"
 
@@ -35,23 +31,6 @@ namespace zc {
 namespace sg = simgrid::s4u;
 
 namespace {
-
-// What produced the report's times besides the network figures: the host link, every counted
-// operation's CPU cost on node 0 (what-ifs applied; docs/machines.md gives each one's source and
-// range), and the what-if flags in force (empty when none), so that a report speaks for itself.
-void add_cpu_and_what_ifs(nlohmann::json& j, const PlatformModel& pm, const WhatIfs& o) {
-  j["model"]["host_startup_s"] = pm.net.host_startup_s;
-  j["model"]["host_per_byte_s"] = pm.net.host_per_byte_s;
-  CostTable node0 = pm.cost.empty() ? CostTable{} : pm.cost.front();
-  nlohmann::json cpu = nlohmann::json::object();
-  for (const auto& [name, v] : node0.fields())
-    cpu[name.starts_with("cost_") ? name.substr(5) : name] = *v;
-  j["model"]["cpu_seconds"] = cpu;
-  nlohmann::json w = nlohmann::json::object();
-  for (const auto& [key, value] : what_if_columns(o))
-    w[key] = value;
-  j["what_if"] = w;
-}
 
 // The stack of a message's actor under the flow fidelity, in KiB. Its code (a SimGrid transfer)
 // ran in 8 KiB with guard pages on, and faulted in 4; SimGrid's debug logging, which formats on
@@ -88,34 +67,6 @@ void apply_model_draw(const ModelDraw& d, PlatformModel& pm) {
 } // namespace
 
 namespace {
-
-// The algorithm and its options, checked, and the scene (loaded here unless the caller has it).
-struct PreparedRun {
-  const Algorithm* algo = nullptr;
-  AlgorithmOptions options;
-  Scene loaded;
-  const Scene* scene = nullptr;
-};
-
-PreparedRun prepare_run(const RunConfig& cfg, const Scene* preloaded) {
-  PreparedRun p;
-  p.algo = cfg.custom ? cfg.custom.get() : &find_algorithm(cfg.algorithm);
-  p.options = cfg.options;
-  validate_options(*p.algo, p.options,
-                   is_platform_file(cfg.machine) || cfg.topology == Topology::Cube);
-  if (!preloaded && !cfg.scene_path.empty()) {
-    LoadOptions lo;
-    lo.width = cfg.width;
-    lo.height = cfg.height;
-    p.loaded = load_scene(cfg.scene_path, lo);
-  }
-  p.scene = preloaded ? preloaded : &p.loaded;
-  if (p.algo->untextured && p.scene->textured())
-    throw InputError(p.scene->path, 0,
-                     p.algo->name + " renders untextured scenes only (Blazek's renderer "
-                                    "had no textures)");
-  return p;
-}
 
 // Where the platform comes from: a built-in machine is generated on the fly for any P (`zcube
 // platform` writes the same text), a path is loaded as given.
@@ -227,7 +178,7 @@ RankOutcome run_ranks(sg::Engine& e, const Algorithm& algo, const PlatformModel&
   };
   for (int r = 0; r < P; ++r)
     sg::Actor::create("node" + std::to_string(r), hosts[r], [&, r] { body(r, algo.node); });
-  if (algo.uses_host) sg::Actor::create("srm", hosts[P], [&] { body(P, algo.host); });
+  if (algo.uses_host) sg::Actor::create(kHostComputerName, hosts[P], [&] { body(P, algo.host); });
   e.run();
   return out;
 }
@@ -251,29 +202,37 @@ std::string failure_after_run(const RankOutcome& o, const Algorithm& algo, int P
   return "";
 }
 
-// The report's "model": the network figures the run used (what-ifs and draw applied), the node
-// memory, then the host link, the CPU costs and the what-ifs.
-void add_model_section(nlohmann::json& j, const PlatformModel& pm, const WhatIfs& w) {
-  j["model"] = {
-      {"startup_short_s", pm.net.startup_short_s},
-      {"startup_long_s", pm.net.startup_long_s},
-      {"short_max_bytes", pm.net.short_max_bytes},
-      {"per_byte_s", pm.net.per_byte_s},
-      {"per_hop_s", pm.net.per_hop_s},
-      {"switching", pm.net.switching == Switching::Circuit ? "circuit" : "store-and-forward"},
-      {"node_memory_bytes", pm.memory.empty() ? 0.0 : pm.memory[0]},
-      {"os_resident_bytes", pm.os_resident}};
-  if (pm.net.both_ways_Bps > 0) j["model"]["both_ways_Bps"] = pm.net.both_ways_Bps;
-  add_cpu_and_what_ifs(j, pm, w);
+// The machine the run was priced on, for the report's "model".
+ModelSection model_section(const PlatformModel& pm, const WhatIfs& w) {
+  ModelSection m;
+  m.net = pm.net;
+  m.node_memory_bytes = pm.memory.empty() ? 0.0 : pm.memory[0];
+  m.os_resident_bytes = pm.os_resident;
+  if (!pm.cost.empty()) m.node0_cpu = pm.cost.front();
+  m.what_ifs = w;
+  return m;
 }
 
 } // namespace
 
-RunResult run_simulation(const RunConfig& cfg, const Scene* preloaded, PlatformModel* model) {
-  const auto wall0 = std::chrono::steady_clock::now();
-  PreparedRun run = prepare_run(cfg, preloaded);
+namespace {
+
+// The ranks' records: the P nodes, then the host computer when the algorithm has one.
+std::vector<NodeRecord> records_of(const std::vector<std::unique_ptr<SimContext>>& ctxs,
+                                   const Algorithm& algo, int P) {
+  std::vector<NodeRecord> records;
+  for (int r = 0; r < P; ++r)
+    records.push_back(ctxs[std::size_t(r)]->record(Recorder::node(r)));
+  if (algo.uses_host) records.push_back(ctxs[std::size_t(P)]->record(Recorder::host(P)));
+  return records;
+}
+
+// The run on SimGrid: the machine loaded into a fresh engine, a context per rank (and one for the
+// host computer), the ranks run to their end or the first failure.
+Executed execute_on_simgrid(const RunConfig& cfg, const PreparedRun& run, PlatformModel* model,
+                            SimCost& sim_cost, PlatformModel& pm) {
   const Algorithm& algo = *run.algo;
-  const Scene& scene = *run.scene;
+  const Scene& scene = run.scene();
   const PlatformSource src = platform_source(cfg);
   std::vector<std::string> args = engine_args(cfg, src);
   std::vector<char*> argv;
@@ -283,7 +242,7 @@ RunResult run_simulation(const RunConfig& cfg, const Scene* preloaded, PlatformM
   declare_platform_flags();
   sg::Engine e(&argc, argv.data());
   keep_stacks_on_fresh_pages();
-  const PlatformModel pm = load_machine(e, cfg, src);
+  pm = load_machine(e, cfg, src);
   if (model) *model = pm;
   const int P = pm.nodes;
   if (algo.check_nodes) algo.check_nodes(run.options, P);
@@ -292,7 +251,6 @@ RunResult run_simulation(const RunConfig& cfg, const Scene* preloaded, PlatformM
   for (int r = 0; r < P; ++r)
     hosts.push_back(e.host_by_name(node_host_name(r)));
   hosts.push_back(e.host_by_name(kHostComputerName));
-  SimCost sim_cost;
   SimNetwork net(pm.net, pm.topology, P, cfg.fidelity, hosts, sim_cost);
   Delivery delivery(net, cfg.fidelity, hosts, message_stack_kib(cfg.simgrid_args), sim_cost);
   std::vector<NodeStats> stats(P + 1);
@@ -301,7 +259,7 @@ RunResult run_simulation(const RunConfig& cfg, const Scene* preloaded, PlatformM
       s.log = std::make_shared<EventLog>();
   std::vector<std::unique_ptr<SimComm>> comms;
   std::vector<std::unique_ptr<SimContext>> ctxs;
-  std::vector<FrameImage> images;
+  Executed done;
   const SceneFacts facts = scene_facts(scene); // once for all the nodes
   for (int r = 0; r <= P; ++r) {
     comms.push_back(
@@ -309,43 +267,41 @@ RunResult run_simulation(const RunConfig& cfg, const Scene* preloaded, PlatformM
     const CostTable cost = r < P ? pm.cost[r] : pm.cost[0];
     const double mem = r < P ? pm.memory[r] : 0.0; // the host computer is not memory-bound
     ctxs.push_back(std::make_unique<SimContext>(*comms[r], stats[r], scene, facts, run.options,
-                                                cost, mem, images, cfg.draw.get()));
+                                                cost, mem, done.images, cfg.draw.get()));
   }
   sim_cost.actors += std::uint64_t(P + (algo.uses_host ? 1 : 0));
   const RankOutcome ranks = run_ranks(e, algo, pm, hosts, delivery, ctxs, stats);
-  const double vtime = sg::Engine::get_clock();
-  const std::string failure =
-      ranks.failure.empty() ? failure_after_run(ranks, algo, P, vtime, cfg) : ranks.failure;
+  done.total_s = sg::Engine::get_clock();
+  done.failure =
+      ranks.failure.empty() ? failure_after_run(ranks, algo, P, done.total_s, cfg) : ranks.failure;
+  done.out_of_memory = ranks.oom;
+  done.machine = pm.machine;
+  done.platform = src.label;
+  done.topology = topology_name(pm.topology);
+  done.fidelity = fidelity_name(cfg.fidelity);
+  done.nodes = P;
+  done.records = records_of(ctxs, algo, P);
+  return done;
+}
 
-  RunResult res;
-  res.ok = failure.empty();
-  res.error = failure;
-  nlohmann::json& j = res.report;
-  add_run_header(j,
-                 {pm.machine, src.label, topology_name(pm.topology), fidelity_name(cfg.fidelity),
-                  preloaded ? scene.path : cfg.scene_path, P},
-                 cfg, algo.name, scene);
-  j["status"] = res.ok ? "ok" : (ranks.oom ? "out_of_memory" : "error");
-  if (!res.ok) j["error"] = failure;
-  j["virtual_time_s"] = vtime;
-  std::vector<NodeRecord> records;
-  for (int r = 0; r <= P; ++r) {
-    if (r == P && !algo.uses_host) break;
-    records.push_back(ctxs[r]->record(r == P ? nlohmann::json("srm") : nlohmann::json(r)));
-  }
-  add_node_sections(j, records, P, vtime);
-  add_model_section(j, pm, cfg.what_ifs);
+} // namespace
+
+RunResult run_simulation(const RunConfig& cfg, const Scene* preloaded, PlatformModel* model) {
+  const PreparedRun run =
+      prepare_run(cfg, preloaded, is_platform_file(cfg.machine) || cfg.topology == Topology::Cube);
+  SimCost sim_cost;
+  PlatformModel pm;
+  RunResult res = finish_run(cfg, run, execute_on_simgrid(cfg, run, model, sim_cost, pm));
+  res.report.model = model_section(pm, cfg.what_ifs);
   // What the simulation cost in events: the same in every run of this configuration, on any host.
-  j["simulation_cost"] = sim_cost;
-  add_image_section(j, images, scene, cfg, res.ok, res.images);
-  j["host"] = {{"wall_time_s",
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count()},
-               {"peak_rss_bytes", peak_rss_bytes()}};
+  res.report.simulation_cost = sim_cost;
   return res;
 }
 
 nlohmann::json run_simulation_isolated(const RunConfig& cfg) {
-  return run_batch({cfg}, 1, [](const RunConfig& c) { return run_simulation(c).report; }).front();
+  return run_batch({cfg}, 1,
+                   [](const RunConfig& c) { return report_json(run_simulation(c).report); })
+      .front();
 }
 
 } // namespace zc

@@ -14,7 +14,7 @@
 
 #include <simgrid/forward.h>
 
-#include "sim/sim_cost.hpp"
+#include "run/sim_cost.hpp"
 
 namespace zc {
 

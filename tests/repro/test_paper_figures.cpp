@@ -64,18 +64,32 @@ TEST(PaperFigures, CharlesSpeedupNeedsTheSequentialTime) {
                       {"virtual_time_s", 1.0},
                       {"phases", nlohmann::json::array()},
                       {"scene", {{"path", kCharlesTeapotScene}, {"width", 512}, {"height", 512}}}};
-  EXPECT_TRUE(needs_sequential_time(r));
-  // The default teapot is not the paper's (Table 1 frames Charles's): no figure.
-  r["scene"]["path"] = "scenes/teapot.json";
-  EXPECT_FALSE(needs_sequential_time(r));
-  r["scene"]["path"] = kCharlesTeapotScene;
+  int size_asked = 0;
+  const auto size = [&size_asked](int n) {
+    return [&size_asked, n] {
+      ++size_asked;
+      return std::pair{n, n};
+    };
+  };
+  PaperRun run{"elastic", "ipsc860", "cube", kCharlesTeapotScene, 16};
+  EXPECT_TRUE(needs_sequential_time(run, size(512)));
+  EXPECT_FALSE(needs_sequential_time(run, size(256)));
+  EXPECT_EQ(size_asked, 2);
+  // The default teapot is not the paper's (Table 1 frames Charles's): no figure, and no size
+  // asked for (no scene loaded).
+  run.scene_path = "scenes/teapot.json";
+  EXPECT_FALSE(needs_sequential_time(run, size(512)));
+  run.scene_path = kCharlesTeapotScene;
+  run.algorithm = "sequential";
+  EXPECT_FALSE(needs_sequential_time(run, size(512)));
+  EXPECT_EQ(size_asked, 2);
   auto f = paper_figures_for(r);
   ASSERT_EQ(f.size(), 1u);
   EXPECT_FALSE(f[0].contains("predicted"));
   f = paper_figures_for(r, 8.3 * 1.1);
   EXPECT_NEAR(f[0]["rel_error"].get<double>(), 0.1, 1e-12);
   r["topology"] = "ring";
-  EXPECT_FALSE(needs_sequential_time(r));
+  EXPECT_TRUE(paper_figures_for(r).empty());
 }
 
 // A what-if run still gets the paper's figure to compare with, marked as not the paper's machine.

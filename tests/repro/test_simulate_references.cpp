@@ -28,7 +28,6 @@ TEST(SimulateReferences, BatchComparesAsEachSimulationAlone) {
                                       point("sequential", 1)};
   const auto reps = simulate_batch(pts, 2);
   ASSERT_EQ(reps.size(), pts.size());
-  set_reference_lookup({}); // the batch's; the runs below draw their own
   for (std::size_t i = 0; i < pts.size(); ++i) {
     ASSERT_EQ(reps[i].value("status", ""), "ok") << reps[i].dump();
     EXPECT_EQ(reps[i]["nodes"], pts[i].nodes) << "reports in the points' order (run longest first)";
@@ -37,13 +36,13 @@ TEST(SimulateReferences, BatchComparesAsEachSimulationAlone) {
   }
 }
 
-// An image section takes the reference the lookup gives: a wrong one is a difference.
+// A run takes the reference its lookup gives: a wrong one is a difference.
 TEST(SimulateReferences, ImageSectionUsesTheLookup) {
   ReferenceFrame wrong;
   wrong.sha256 = "not the picture";
-  set_reference_lookup([&](const Scene&, int, int) { return &wrong; });
-  const auto rep = run_simulation_isolated(point("elastic", 4));
-  set_reference_lookup({});
+  RunConfig looked_up = point("elastic", 4);
+  looked_up.reference_lookup = [&](const Scene&, int, int) { return &wrong; };
+  const auto rep = run_simulation_isolated(looked_up);
   EXPECT_EQ(rep["image"]["identical_to_sequential"], false);
   EXPECT_EQ(rep["image"]["differs_from_sequential"], "colour and depth");
   EXPECT_EQ(run_simulation_isolated(point("elastic", 4))["image"]["identical_to_sequential"], true);

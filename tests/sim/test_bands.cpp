@@ -16,8 +16,8 @@ using namespace zc::test;
 namespace {
 
 nlohmann::json run_banded(const RunConfig& cfg, const BandsRequest& req) {
-  const auto r =
-      run_batch({cfg}, 1, [&](const RunConfig& c) { return run_with_bands(c, req).report; });
+  const auto r = run_batch(
+      {cfg}, 1, [&](const RunConfig& c) { return report_json(run_with_bands(c, req).report); });
   EXPECT_EQ(r.front()["status"], "ok") << r.front().dump().substr(0, 400);
   return r.front();
 }

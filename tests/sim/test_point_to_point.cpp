@@ -211,3 +211,19 @@ TEST(PointToPoint, FlowMessageActorsFitTheirStacksWithGuardPages) {
     EXPECT_GT(r.value("virtual_time_s", 0.0), 0.0) << extra.back();
   }
 }
+
+// The sender's own measurements are the run's results: no message carries them to node 0, so the
+// run holds exactly a ping and a pong per target and size, and node 0 keeps no results.
+TEST(PointToPoint, ResultsAreTheSendersWithoutAnExtraMessage) {
+  RunConfig c = sim_config("ipsc860", 8, Topology::Cube, Fidelity::Circuit);
+  c.algorithm = "pingpong";
+  c.options.values = {{"from", "3"}, {"to", "0,5"}, {"sizes", "64B,4096B"}};
+  const auto r = run_simulation_isolated(c);
+  ASSERT_EQ(r["status"], "ok") << r.dump();
+  ASSERT_EQ(r["results"].size(), 4u) << r.dump();
+  for (const auto& x : r["results"])
+    EXPECT_EQ(x["from"], 3);
+  EXPECT_EQ(r["communication"]["messages"], 2 * 4);
+  EXPECT_TRUE(r["per_node"][3]["metrics"].contains("results"));
+  EXPECT_FALSE(r["per_node"][0].contains("metrics")) << r["per_node"][0].dump();
+}

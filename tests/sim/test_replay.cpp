@@ -19,11 +19,11 @@ namespace {
 const std::string kRoot = ZCUBE_SOURCE_DIR;
 
 nlohmann::json record_point(const RunConfig& cfg, std::vector<std::uint8_t>* trace) {
-  if (!trace) return run_simulation(cfg).report;
+  if (!trace) return report_json(run_simulation(cfg).report);
   std::shared_ptr<CallTrace> t;
   RunResult r = record_simulation(cfg, nullptr, t);
   if (t) *trace = t->serialize();
-  return r.report;
+  return report_json(r.report);
 }
 
 std::optional<nlohmann::json> replay_point(const RunConfig& cfg,
@@ -31,7 +31,7 @@ std::optional<nlohmann::json> replay_point(const RunConfig& cfg,
   auto t = std::make_shared<const CallTrace>(CallTrace::parse(trace));
   auto r = replay_simulation(cfg, nullptr, t);
   if (!r) return std::nullopt;
-  return r->report;
+  return report_json(r->report);
 }
 
 // Every deterministic field: all but the host's wall time and memory.
@@ -50,8 +50,8 @@ ReplayCounts expect_replays_exact(const RunConfig& a, const std::vector<RunConfi
   const ReplayRunner runner{[](const RunConfig&) { return std::string("key"); }, record_point,
                             replay_point};
   const auto replayed = run_batch_replaying(points, 2, runner, traces, {}, &counts);
-  const auto full =
-      run_batch(others, 2, [](const RunConfig& c) { return run_simulation(c).report; });
+  const auto full = run_batch(
+      others, 2, [](const RunConfig& c) { return report_json(run_simulation(c).report); });
   EXPECT_EQ(counts.recorded, 1u);
   EXPECT_EQ(replayed.front()["status"], "ok") << replayed.front().dump();
   for (std::size_t i = 0; i < others.size(); ++i) {

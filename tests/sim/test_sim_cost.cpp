@@ -1,4 +1,4 @@
-// sim: the report's simulation_cost (sim/sim_cost.hpp), what a run cost the simulator in its own
+// sim: the report's simulation_cost (run/sim_cost.hpp), what a run cost the simulator in its own
 // events: counted exactly for two messages, the same in two runs, and larger under the fidelities
 // that do more per message.
 #include <string>
