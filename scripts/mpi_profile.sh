@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # What the code does, phase by phase, on one MPI rank: callgrind's instruction counts (they do not
 # depend on what else the machine runs), dumped at every phase boundary, the functions above 2 % of
-# each phase listed (scripts/mpi_profile.py). docs/machines.md, "What profiling the real runs found".
+# each phase listed (scripts/mpi_profile.py). results/mpi_validation_log.md, "What profiling the
+# real runs found".
 # usage: scripts/mpi_profile.sh OUTDIR NAME PROCESSES zcube-run-arguments...
 #   e.g. scripts/mpi_profile.sh /tmp/prof pair-rs 1 --algorithm pair-rs --scene scenes/bunny.json --size 5120x5120
 # About 50 times the run's time (callgrind); a method with a host computer takes 2 processes.

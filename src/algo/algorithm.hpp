@@ -1,7 +1,7 @@
 #pragma once
-// What an algorithm sees of the simulated machine (docs/architecture.md: no SimGrid type here, so
-// the same algorithm code can later run on an MPI backend). One NodeContext per node actor (and one
-// for the host computer, srm, when the algorithm uses it).
+// What an algorithm sees of the machine it runs on (docs/architecture.md: no SimGrid or MPI type
+// here, so the same algorithm code runs on the simulator and on the MPI backend). One NodeContext
+// per node (and one for the host computer, srm, when the algorithm uses it).
 #include <cstdint>
 #include <functional>
 #include <map>

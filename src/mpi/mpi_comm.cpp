@@ -30,8 +30,9 @@ int byte_count(const Bytes& b) {
 // most kInlineMax bytes is copied into one MPI message with the trailer after it; a larger one
 // goes as a 16-byte header message (payload size, then the trailer word with kBodyFollows set)
 // and the payload itself, sent from the sender's own buffer: appending 8 bytes to a buffer of
-// several megabytes reallocated and copied all of it (9 ms for 18.5 MB). MPI keeps the order of
-// messages from one sender with one tag, so the body is the next message after its header.
+// several megabytes would reallocate and copy all of it, a copy no modelled program makes. MPI
+// keeps the order of messages from one sender with one tag, so the body is the next message after
+// its header.
 constexpr std::size_t kInlineMax = 4096;
 constexpr std::uint64_t kBodyFollows = std::uint64_t(1) << 63;
 
@@ -119,8 +120,8 @@ void MpiComm::send(int dst, int tag, Message m) {
 
 // Sends complete in the order they were posted (MPI's non-overtaking order per destination, and a
 // shared-memory transport drains its queues in order): testing from the oldest and stopping at the
-// first one in flight keeps a burst of sends linear (testing them all after every send made a
-// host's 1,024 descriptions cost half a million MPI_Test calls).
+// first one in flight keeps a burst of sends linear (testing them all after every send is
+// quadratic in a burst: a Blazek host posting a description per object).
 void MpiComm::reap() {
   std::size_t done = 0;
   while (done < in_flight_.size() && static_cast<MpiSend&>(*in_flight_[done]).done())
@@ -144,8 +145,8 @@ SendHandle MpiComm::isend(int dst, int tag, Message m) {
 }
 
 // A body of n bytes received into a buffer that is not cleared first. A Bytes (std::vector) cannot
-// be sized without writing every byte (ZBUF-EXC's 144 MB band: a memset as long as a third of the
-// copy that follows, waste no modelled program has): MPI writes into the reserved capacity, and
+// be sized without writing every byte (a memset of a whole large band before the copy that
+// follows, waste no modelled program has): MPI writes into the reserved capacity, and
 // the vector then takes those bytes as its elements by inserting them from where they already lie
 // (a copy onto itself, which memmove returns from at once: source and destination are equal).
 Bytes MpiComm::receive_body(std::size_t n, int from_rank, int tag) {

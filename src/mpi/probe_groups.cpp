@@ -56,13 +56,13 @@ const std::vector<Block>& blocks() {
       {"z-buffer", {kFarLines, kDistantLines}},
       {"span lists", {kSort}},
       // Kurc et al.'s active z-buffer, less its span starts and fragments: a pixel tested through
-      // the MSA and one appended to the WPA, apart (zcube's loop: about 5 and 41 instructions;
-      // the 80386's ratio, 3.4 : 1 for tested, does not hold here). The bone at every size
+      // the MSA and one appended to the WPA, apart (zcube's loop appends at a far higher cost
+      // than it tests, the reverse of the 80386's mixes). The bone at every size
       // appends one pixel for three tested; its triangles dealt to two nodes two for three, the
       // three bones one for ten (the twelve bunnies' mix) and dealt to two nodes one for five.
       // A span's set-up record fetched from memory (records_fetched), with them: every active loop
-      // fetches some, at rates its mix does not follow (a span: the bone at 4096 0.08, at 2048
-      // 0.11, at 512 0.31; the three bones at 2048 0.23; the bone's half at 4096 0.03).
+      // fetches some, at rates its mix does not follow (from a few to a third of its spans,
+      // depending on the scene and size), so the three groups are one block.
       {"active z-buffer", {kWpaTested, kWpaAppended, kRecordFetches}}};
   return b;
 }

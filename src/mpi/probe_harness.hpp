@@ -57,8 +57,9 @@ struct Probe {
   // every rank at once. A change of the machine's load meanwhile falls on all the loops, not on
   // those timed last (the blocks subtract one loop's costs from another's), and on the alone and
   // at-once times alike: their ratio, what a node loses to the others sharing the memory system,
-  // is taken in the same minutes (timed one after the other, two probes found a rank 17 % faster
-  // with the other cores busy than alone). A loop's time is the median of its calls.
+  // is taken in the same minutes (timed one after the other, a drift of the host between the two
+  // series can make a rank look faster with the other cores busy than alone). A loop's time is
+  // the median of its calls.
   static constexpr int kRounds = 3;
   void run();
 };

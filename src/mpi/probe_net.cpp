@@ -64,8 +64,8 @@ std::vector<double> exchange(MpiComm& comm, int peer, std::size_t bytes, int rep
 }
 
 // The fastest round trip: what the transport takes. No round trip can beat the transport, while
-// on a shared machine a rank that loses its core waits a time slice, and under a heavy load more
-// than a tenth of the round trips did (a tenth percentile of 0.67 ms for an 8-byte message).
+// on a shared machine a rank that loses its core waits a time slice, and under a heavy load so
+// many round trips do that even a low percentile would carry the wait.
 double low_percentile(std::vector<double> v) {
   return v.empty() ? 0.0 : *std::min_element(v.begin(), v.end());
 }
@@ -145,8 +145,8 @@ nlohmann::json piecewise(const std::vector<Sample>& all, const std::vector<doubl
 
 // A message is no faster than a shorter one over the same path: each size's time is at most the
 // fastest time of any larger size. On a loaded machine every round trip of one size can wait for a
-// time slice (all 101 of the empty message's took 2 ms once, beside 0.5 us for 8 bytes, and the fit
-// made that a 223 us start-up); the bound drops such a size to what a larger message showed.
+// time slice, and the fit would read that wait as a start-up hundreds of times the transport's;
+// the bound drops such a size to what a larger message showed.
 void bound_by_larger(std::vector<Sample>& all) {
   std::sort(all.begin(), all.end(),
             [](const Sample& a, const Sample& b) { return a.bytes < b.bytes; });
@@ -165,8 +165,8 @@ NetFit measure_network(int rank, int size) {
   // From a scanline count to a frame-buffer band: what the algorithms send. The largest, 64 MiB,
   // is beyond this machine's 32 MiB last-level cache with its receive buffer, as the workloads'
   // large messages are (ZBUF-EXC's half z-buffer at 5120x5120: 144 MB; a pair's winning pixels:
-  // tens of megabytes): below it, a message's copy and the receive buffer's clear are cache-bound
-  // (16 MiB exchanged: 0.166 ns a byte, 1 MiB: 0.132), above it memory-bound.
+  // tens of megabytes): below it, a message's copy and the receive buffer's clear are cache-bound,
+  // above it memory-bound, and a byte costs more there.
   const std::size_t sizes[] = {0,     8,     64,     256,      1024,     2048,      4096,     8192,
                                16384, 65536, 262144, 1u << 20, 4u << 20, 16u << 20, 64u << 20};
   NetFit f;

@@ -14,8 +14,8 @@ namespace {
 // before (`k` where `known`), divided among the block's own groups (non-negative least squares on
 // relative errors). With `alone` (the multipliers rank 0 found timing the loops alone), a block of
 // several groups is solved for one common slowdown s over the alone split (k = s x alone): timed
-// at once, the ranks' shared memory system made the z-buffer's split unsteady (two probes: a
-// fragment 1.05 and 0.47 ns) while its sum on the probe's loops was steady. Returns s (1 when
+// at once, the ranks' shared memory system makes the z-buffer's split unsteady from one probe to
+// the next while its sum on the probe's loops stays steady. Returns s (1 when
 // free).
 double solve_block(std::size_t b, const std::vector<Loop>& loops,
                    const std::vector<std::vector<double>>& A, const std::vector<double>& alone,
@@ -53,8 +53,8 @@ double solve_block(std::size_t b, const std::vector<Loop>& loops,
   const std::vector<double> x = nnls(M, r);
   // A core that shares the memory system and the last-level cache with busy ones is no faster
   // than alone: at once, a group's cost is floored at its alone cost (the fit's slowdown, returned,
-  // may come out below 1; the noise of the subtraction chain made it 0.81-0.99 for the near
-  // z-buffer in probes whose loops took the same median time at once as alone).
+  // may come out below 1 from the noise of the subtraction chain alone, even when the loops run
+  // as fast at once as alone).
   const bool floored = !alone.empty();
   for (std::size_t j = 0; j < gs.size(); ++j) {
     const double fitted = common ? x[0] * alone[gs[j]] : x[j];

@@ -35,9 +35,9 @@ bool has_avx2() {
 
 // The untextured pixels [x0, x1] of a row appended to the WPA eight at a time, bit for bit what
 // RowShader's depth and color give (raster/avx2_lanes.hpp, as the frame buffer's span loop).
-// Pixel by pixel, a written pixel's colour (clamps and conversions) took about 63 instructions,
-// two thirds of an appended pixel's; the frame buffer's loop, on which the probe prices a written
-// pixel, spends 11.
+// Pixel by pixel, a written pixel's colour (clamps and conversions) is most of an appended
+// pixel's work and several times what the frame buffer's vector loop spends on it; the probe
+// prices a written pixel on that loop, so both loops colour alike.
 __attribute__((target("avx2"))) void append_flat_avx2(const RowShader& rs, int x0, int x1,
                                                       std::vector<WinningPixel>& wpa,
                                                       std::uint32_t* msa) {

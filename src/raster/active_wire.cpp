@@ -10,8 +10,9 @@ namespace zc {
 
 namespace {
 // n pixels appended to `out` (its capacity reserved before: nothing cleared, then overwritten),
-// encoded a block at a time into the stack (a bounds check a field made a message of winning
-// pixels cost 60 instructions a pixel).
+// encoded a block at a time into the stack (a bounds check a field would cost a message of winning
+// pixels far more than its bytes' copy, work the paper's program, which sent its WPA in place,
+// never did).
 void append_pixels(std::vector<std::uint8_t>& out, const WinningPixel* p, std::size_t n) {
   constexpr std::size_t kBlock = 256;
   std::uint8_t buf[kBlock * kWirePixelBytes];

@@ -382,8 +382,8 @@ int reproduce(const ReproduceOptions& o) {
   std::optional<BackgroundJob> calibration;
   if (calibrating && !o.runner && o.jobs >= 2)
     calibration.emplace([&o] { reproduce_calibration(o); });
-  // One interpreter draws every plot: started now, it loads matplotlib (half a CPU-second) while
-  // the simulations run, and draws each figure once its files are written.
+  // One interpreter draws every plot: started now, it loads matplotlib (a large share of a plot's
+  // cost) while the simulations run, and draws each figure once its files are written.
   std::optional<ScratchDir> plot_dir;
   std::optional<BackgroundPlots> plots;
   if (o.plots && o.write) {

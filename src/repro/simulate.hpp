@@ -28,7 +28,7 @@ nlohmann::json program_inputs(const RunConfig& c);
 // One simulation's report, paper figures attached: the point runner of zcube's batches.
 nlohmann::json simulate_point(const RunConfig& cfg);
 
-// run_batch with simulate_point, recording and replaying (docs/architecture.md, "Record and
+// run_batch with simulate_point, recording and replaying (docs/simulator.md, "Record and
 // replay") the points that differ only in their machine. `keep_traces`: the recordings are kept
 // for the process's later batches (the calibration's steps), and every point records; otherwise
 // only the points another of the batch can replay record.

@@ -30,7 +30,7 @@ std::vector<nlohmann::json>
 run_batch(const std::vector<RunConfig>& points, int jobs, const PointRunner& run_point,
           const std::function<void(const BatchProgress&)>& progress = {});
 
-// Record and replay (docs/architecture.md): points whose node programs make the same calls (the
+// Record and replay (docs/simulator.md): points whose node programs make the same calls (the
 // same `key`) are run once in full, recording their calls, and the others replay the recording.
 struct ReplayRunner {
   // The points that make the same calls share a key; "" for a point always run in full.

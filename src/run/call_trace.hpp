@@ -1,5 +1,5 @@
 #pragma once
-// Record and replay (docs/architecture.md, "Record and replay"): the calls each node program makes
+// Record and replay (docs/simulator.md, "Record and replay"): the calls each node program makes
 // on its NodeContext and Comm during one run, in order. A node program sees the machine only
 // through those two interfaces and never reads the clock (except pingpong, through Comm::now), so
 // its calls depend on the scene, the algorithm and its options, the node count and the topology,

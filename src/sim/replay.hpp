@@ -1,5 +1,5 @@
 #pragma once
-// Record and replay on the simulator (docs/architecture.md, "Record and replay"): a run recorded
+// Record and replay on the simulator (docs/simulator.md, "Record and replay"): a run recorded
 // once (run/call_trace.hpp) is replayed under other CPU costs, another network, fidelity or node
 // memory by the same SimContext and SimComm that run the algorithms, executing the recorded calls
 // with messages counted and charged at the recorded sizes but no bytes behind them; the report is

@@ -38,8 +38,8 @@ public:
   // (a replay drops it unread: sim/replay.hpp).
   TransitPtr take(int src, int tag, int* from);
   // A replay's send (sim/replay.hpp): a message (or a bundle of blocks) counted and charged as the
-  // recorded one, with no bytes behind it, since nobody reads a replay's messages. Dummy buffers
-  // of the recorded sizes were 0.7 GB written (and page-faulted) over `zcube reproduce`'s replays.
+  // recorded one, with no bytes behind it, since nobody reads a replay's messages: dummy buffers
+  // of the recorded sizes would be written, and their pages faulted in, for nothing.
   SendHandle isend_unread(int dst, int tag, std::size_t payload_bytes, std::size_t charged,
                           bool bundle);
 

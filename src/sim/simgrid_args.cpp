@@ -48,7 +48,8 @@ Setting boolean(const char* key) {
 
 const std::vector<Setting>& settings() {
   static const std::vector<Setting> s = {
-      // The network model of the flow fidelity (docs/fidelity.md) and its solver options.
+      // The network model of the flow fidelity (platforms/README.md, "Network fidelity") and its
+      // solver options.
       choice("network/model", {"CM02", "LV08"}),
       choice("network/optim", {"Lazy", "Full"}),
       boolean("network/crosstraffic"),

@@ -4,7 +4,7 @@
 // was set plus its duration, never less than SimGrid's precision), so that the clock reads as it
 // did with SimGrid's sleeps. A SimGrid timer per distinct date resumes the parties due at it, with
 // those due within the precision after it (SimGrid ends such sleeps together too), in their order
-// (rank order; the rule for ranks resumed at one virtual time, docs/architecture.md).
+// (rank order; the rule for ranks resumed at one virtual time, docs/simulator.md).
 // No SimGrid activity is made per wait: a sleep or a semaphore's timed wait
 // costs a CPU action and a variable of its bandwidth-sharing system each.
 #include <cstdint>

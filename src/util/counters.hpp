@@ -32,8 +32,8 @@ struct Counters {
   std::uint64_t list_merges = 0; // pixels of two x-sorted pixel lists merged into a new list (§3.1)
   std::uint64_t wpa_tested = 0;  // depth comparisons through the MSA against a WPA entry (§2)
   std::uint64_t wpa_appended = 0; // fragments appended to the WPA without comparison (§2)
-  // Loops that profiling the MPI backend's runs found uncounted (docs/machines.md, "What profiling
-  // the real runs found"):
+  // Loops that profiling the MPI backend's runs found uncounted (docs/machines.md, "Loops the
+  // profiler found"):
   std::uint64_t edge_walks = 0;        // triangles' edges set up to walk their rows (a pass each)
   std::uint64_t span_starts = 0;       // spans started: start values from the planes
   std::uint64_t sort_steps = 0;        // comparison-sort steps: n ceil(log2 n) for a list of n

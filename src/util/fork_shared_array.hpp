@@ -15,9 +15,9 @@ namespace zc {
 // read it (a table shared by a batch's simulations). It lives in a memory file mapped shared
 // (memfd), not in anonymous memory: a fork copies no page-table entry of it, a child that reads it
 // maps it in (map_in, one call), and a child that does not read it pays nothing. (On anonymous
-// memory, Blazek's 130 MB set-up cache cost each fork of `zcube reproduce` a copy of 33,000
-// page-table entries; on huge pages, each fresh one cost the parent about 14 ms on the 2-core VM
-// it was measured on, 0.9 s for the cache.) Appending grows it; it never shrinks.
+// memory every fork would copy the page-table entries of a table of a hundred megabytes, and huge
+// pages for it cost the parent more than they save: results/simulator_costs.md.) Appending grows
+// it; it never shrinks.
 template <class T> class ForkSharedArray {
   static_assert(std::is_trivially_copyable_v<T>);
 

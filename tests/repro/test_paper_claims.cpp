@@ -87,11 +87,11 @@ TEST(PaperClaims, CharlesSkullRingBelowHypercube) {
 }
 
 // "When we use an hypercube of 16 processors we go [held out] times faster while the speed-up of
-// the teapot is limited to 8.3". Not reproduced (skull 7.28, Table 1's teapot 7.92, with the
-// paper's records and the loops priced apart): the stand-in carries 117 us of work per vertex on
-// the wire against the teapot's 317 us, and no plausible CPU or network setting reverses the order
-// (docs/papers.md, "Charles's skull against the teapot", the measured what-ifs). Disabled for that
-// documented reason; never tuned to the held-out figure.
+// the teapot is limited to 8.3". Not reproduced: the stand-in carries well under half the
+// teapot's work per vertex on the wire (smaller triangles), and no plausible CPU or network
+// setting reverses the order (docs/papers.md, "Charles's skull against the teapot"; the what-ifs
+// that showed it in CHANGELOG.md). Disabled for that documented reason; never tuned to the
+// held-out figure.
 TEST(PaperClaims, DISABLED_CharlesSkullSpeedupAboveTeapotOn16CubeNodes) {
   const auto& c = CharlesRuns::get();
   c.expect_ok();

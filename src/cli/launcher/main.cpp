@@ -1,8 +1,8 @@
 // The zcube command's first step: it answers `zcube run --list` from the algorithm registry alone,
 // and becomes zcube-full (execv: same process, arguments, exit status and signals) for anything
-// else. zcube-full links SimGrid, whose ns-3 libraries alone cost the dynamic loader about 25 ms of
-// CPU at every start (relocations of some 40 libraries): most of a listing's time, and a
-// simulation's first milliseconds, which a listing does not need.
+// else. zcube-full links SimGrid, whose ns-3 libraries make the dynamic loader relocate some 40
+// libraries at every start: most of a listing's time, work a listing does not need
+// (results/simulator_costs.md).
 #include <unistd.h>
 
 #include <cerrno>
