@@ -31,8 +31,8 @@ const std::vector<CostGroup>& probe_groups() {
   return g;
 }
 
-const std::vector<Block>& blocks() {
-  static const std::vector<Block> b = {
+const std::vector<LoopBlock>& loop_blocks() {
+  static const std::vector<LoopBlock> b = {
       {"project", {kVertex}},
       {"set-up", {kTriangle}},
       {"load estimate", {kEstimate}},

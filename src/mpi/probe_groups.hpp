@@ -38,8 +38,8 @@ enum Group : std::size_t {
 
 const std::vector<CostGroup>& probe_groups();
 
-// The blocks of loops, in the order they are solved (blocks()).
-enum BlockId : std::size_t {
+// The blocks of loops, in the order they are solved (loop_blocks()).
+enum LoopBlockId : std::size_t {
   kProjectLoops,
   kSetupLoops,
   kEstimateLoops,
@@ -58,12 +58,12 @@ enum BlockId : std::size_t {
   kActiveLoops,
 };
 
-// A block: the groups its loops measure, solved together (most blocks have one).
-struct Block {
+// A block of loops: the groups its loops measure, solved together (most blocks have one).
+struct LoopBlock {
   const char* name;
   std::vector<std::size_t> groups;
 };
-const std::vector<Block>& blocks();
+const std::vector<LoopBlock>& loop_blocks();
 
 // The table the probe's multipliers scale (probe_groups.cpp says what it holds).
 CostTable probe_prior();
