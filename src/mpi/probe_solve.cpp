@@ -32,7 +32,7 @@ double solve_block(std::size_t b, const std::vector<Loop>& loops,
     double rest = loops[i].seconds;
     std::vector<double> row;
     double at_alone = 0; // the block's groups priced at the alone multipliers
-    for (std::size_t g = 0; g < kGroups; ++g) {
+    for (std::size_t g = 0; g < kProbeGroups; ++g) {
       const bool mine = std::find(gs.begin(), gs.end(), g) != gs.end();
       if (known[g])
         rest -= k[g] * A[i][g];
@@ -71,8 +71,8 @@ double solve_block(std::size_t b, const std::vector<Loop>& loops,
 std::vector<double> solve(const std::vector<Loop>& loops, const std::vector<double>& alone,
                           nlohmann::json& log) {
   const CostTable prior = probe_prior();
-  std::vector<double> k(kGroups, 0.0);
-  std::vector<bool> known(kGroups, false);
+  std::vector<double> k(kProbeGroups, 0.0);
+  std::vector<bool> known(kProbeGroups, false);
   std::vector<std::vector<double>> A;
   for (const Loop& l : loops)
     A.push_back(group_seconds(prior, probe_groups(), l.c));
@@ -86,7 +86,7 @@ std::vector<double> solve(const std::vector<Loop>& loops, const std::vector<doub
   for (std::size_t i = 0; i < loops.size(); ++i) {
     double pred = 0;
     nlohmann::json by_group = nlohmann::json::object();
-    for (std::size_t g = 0; g < kGroups; ++g) {
+    for (std::size_t g = 0; g < kProbeGroups; ++g) {
       pred += k[g] * A[i][g];
       if (A[i][g] > 0) by_group[probe_groups()[g].name] = A[i][g];
     }
@@ -98,7 +98,7 @@ std::vector<double> solve(const std::vector<Loop>& loops, const std::vector<doub
                     {"prior_s", by_group},
                     {"predicted_s", pred}});
   }
-  for (std::size_t g = 0; g < kGroups; ++g) {
+  for (std::size_t g = 0; g < kProbeGroups; ++g) {
     groups.push_back({{"group", probe_groups()[g].name}, {"fields", probe_groups()[g].fields}});
     mult[probe_groups()[g].name] = k[g];
   }
