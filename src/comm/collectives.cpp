@@ -14,11 +14,12 @@ namespace {
 // of the blocks' charged sizes; each block keeps its charged size, so that the node a block reaches
 // charges it again, and its payload, which the simulator shares instead of copying.
 
-std::vector<Message> uncharged_all(std::vector<Bytes> parts) {
+// Each part a message charged as its payload's size (charged_as_payload).
+std::vector<Message> charged_as_payloads(std::vector<Bytes> parts) {
   std::vector<Message> m;
   m.reserve(parts.size());
   for (auto& b : parts)
-    m.push_back(uncharged(std::move(b)));
+    m.push_back(charged_as_payload(std::move(b)));
   return m;
 }
 
@@ -157,7 +158,7 @@ Message broadcast(Comm& c, int root, Message data, int tag) {
 }
 
 Bytes broadcast(Comm& c, int root, Bytes data, int tag) {
-  return broadcast(c, root, uncharged(std::move(data)), tag).payload;
+  return broadcast(c, root, charged_as_payload(std::move(data)), tag).payload;
 }
 
 Message scatterv(Comm& c, int root, std::vector<Message> parts, int tag) {
@@ -213,7 +214,7 @@ Message scatterv(Comm& c, int root, std::vector<Message> parts, int tag) {
 }
 
 Bytes scatterv(Comm& c, int root, std::vector<Bytes> parts, int tag) {
-  return scatterv(c, root, uncharged_all(std::move(parts)), tag).payload;
+  return scatterv(c, root, charged_as_payloads(std::move(parts)), tag).payload;
 }
 
 std::vector<Message> gatherv(Comm& c, int root, Message data, int tag) {
@@ -260,7 +261,7 @@ std::vector<Message> gatherv(Comm& c, int root, Message data, int tag) {
 }
 
 std::vector<Bytes> gatherv(Comm& c, int root, Bytes data, int tag) {
-  return payloads(gatherv(c, root, uncharged(std::move(data)), tag));
+  return payloads(gatherv(c, root, charged_as_payload(std::move(data)), tag));
 }
 
 std::vector<Message> allgatherv(Comm& c, Message data, int tag) {
@@ -294,7 +295,7 @@ std::vector<Message> allgatherv(Comm& c, Message data, int tag) {
 }
 
 std::vector<Bytes> allgatherv(Comm& c, Bytes data, int tag) {
-  return payloads(allgatherv(c, uncharged(std::move(data)), tag));
+  return payloads(allgatherv(c, charged_as_payload(std::move(data)), tag));
 }
 
 std::vector<std::int64_t> reduce(Comm& c, int root, std::vector<std::int64_t> v, Op op, int tag) {
@@ -370,7 +371,7 @@ std::vector<Message> alltoallv(Comm& c, std::vector<Message> out, AllToAll how, 
 }
 
 std::vector<Bytes> alltoallv(Comm& c, std::vector<Bytes> out, AllToAll how, int tag) {
-  return payloads(alltoallv(c, uncharged_all(std::move(out)), how, tag));
+  return payloads(alltoallv(c, charged_as_payloads(std::move(out)), how, tag));
 }
 
 void barrier(Comm& c, int tag) {

@@ -26,8 +26,9 @@ struct Message {
   Payload payload;
   std::size_t charged = 0;
 };
-// A message charged as its payload's size.
-inline Message uncharged(Payload payload) {
+// A message charged as its payload's size: the default, where zcube sends the bytes the modelled
+// program sent.
+inline Message charged_as_payload(Payload payload) {
   const std::size_t n = payload.size();
   return {std::move(payload), n};
 }
@@ -81,7 +82,7 @@ public:
   virtual Message recv_message(int src, int tag, int* from = nullptr) = 0;
 
   SendHandle isend(int dst, int tag, Bytes data) {
-    return isend(dst, tag, uncharged(std::move(data)));
+    return isend(dst, tag, charged_as_payload(std::move(data)));
   }
   // Several blocks as one message (charged as blocks_charged says), received whole by
   // recv_blocks. By default packed into one payload; the simulator passes the blocks' shared
@@ -95,7 +96,7 @@ public:
   }
   // Blocking send: returns when the message has been delivered.
   virtual void send(int dst, int tag, Message m) { isend(dst, tag, std::move(m))->wait(); }
-  void send(int dst, int tag, Bytes data) { send(dst, tag, uncharged(std::move(data))); }
+  void send(int dst, int tag, Bytes data) { send(dst, tag, charged_as_payload(std::move(data))); }
   Bytes recv(int src, int tag, int* from = nullptr) {
     return std::move(recv_message(src, tag, from).payload).take();
   }

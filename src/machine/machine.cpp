@@ -40,8 +40,8 @@ double NetworkParams::message_time(double bytes, int hops) const {
   return startup(bytes) + bytes * per_byte_s + (hops - 1) * per_hop_s;
 }
 
-const std::vector<CostGroup>& cost_groups() {
-  static const std::vector<CostGroup> g = {
+const std::vector<CounterGroup>& cost_groups() {
+  static const std::vector<CounterGroup> g = {
       {"geometry",
        {"vertices_transformed", "triangles_in", "triangles_culled", "triangles_clipped",
         "triangles_setup", "triangles_estimated", "triangles_tessellated"}},
@@ -64,7 +64,7 @@ CostTable scale_groups(const CostTable& t, const std::vector<double>& scale) {
   return scale_groups(t, cost_groups(), scale);
 }
 
-CostTable scale_groups(const CostTable& t, const std::vector<CostGroup>& groups,
+CostTable scale_groups(const CostTable& t, const std::vector<CounterGroup>& groups,
                        const std::vector<double>& scale) {
   CostTable out = t;
   for (auto& [id, v] : out.fields())
@@ -74,7 +74,7 @@ CostTable scale_groups(const CostTable& t, const std::vector<CostGroup>& groups,
   return out;
 }
 
-std::vector<double> group_seconds(const CostTable& prices, const std::vector<CostGroup>& groups,
+std::vector<double> group_seconds(const CostTable& prices, const std::vector<CounterGroup>& groups,
                                   const Counters& work) {
   std::vector<double> out;
   for (std::size_t g = 0; g < groups.size(); ++g) {

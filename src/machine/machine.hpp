@@ -83,20 +83,22 @@ struct MachineSpec {
   std::string generated_by; // the platform file's provenance line; empty: `zcube platform ...`
 };
 
-// The calibration fits one multiplier per group of cost fields: fields of a group are the same kind
-// of work (geometry per triangle or vertex, per span or row, per pixel, ...) and scale together.
-struct CostGroup {
+// Counters fields whose costs scale by one multiplier: the same kind of work (geometry per
+// triangle or vertex, per span or row, per pixel, ...).
+struct CounterGroup {
   std::string name;
   std::vector<std::string> fields; // Counters field names
 };
-const std::vector<CostGroup>& cost_groups();
-// Multiplies every field of group g by scale[g] (the calibration's groups, or others).
+// The cost groups: the calibration fits one multiplier per group, the calibrated tables and the
+// uncertainty analysis scale them (the MPI probe prices finer groups: mpi/probe_groups.hpp).
+const std::vector<CounterGroup>& cost_groups();
+// Multiplies every field of group g by scale[g] (the cost groups, or others).
 CostTable scale_groups(const CostTable& t, const std::vector<double>& scale);
-CostTable scale_groups(const CostTable& t, const std::vector<CostGroup>& groups,
+CostTable scale_groups(const CostTable& t, const std::vector<CounterGroup>& groups,
                        const std::vector<double>& scale);
 // Seconds the operations of `work` take at `prices`, one figure per group (the columns of the
 // calibration's and the probe's linear fits).
-std::vector<double> group_seconds(const CostTable& prices, const std::vector<CostGroup>& groups,
+std::vector<double> group_seconds(const CostTable& prices, const std::vector<CounterGroup>& groups,
                                   const Counters& work);
 // The physical estimate of the iPSC/2's 80386 + 80387 table (machine/cpu_model.hpp), the point the
 // calibration starts from and is bounded around.

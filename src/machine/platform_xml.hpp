@@ -40,6 +40,9 @@ std::string platform_file_name(const std::string& machine, int nodes, Topology t
 
 // Names used in the XML.
 std::string node_host_name(int rank);
+// The host computer: SRM, Intel's System Resource Manager, the iPSC's host (docs/glossary.md).
+// The name is part of the platform-file format (a user's file names the host "srm", and zcube
+// refuses a file without it), so it stays as the papers' machines had it.
 constexpr const char* kHostComputerName = "srm";
 constexpr const char* kHostUpLink = "host-up";
 constexpr const char* kHostDownLink = "host-down";

@@ -9,9 +9,10 @@
 //  - CPU (mpi/probe_cpu.hpp): every rank times zcube's own loops (projection, set-up, the
 //    scanline z-buffer, span lists, the active pixel z-buffer, a fresh frame buffer, both merges,
 //    packing, tessellation, the load estimate) on its CPU time and fits one multiplier of the
-//    80386 table per cost group to them (NNLS on relative errors); twice: rank 0 alone while the
-//    other ranks sleep (the platform of one node), then every rank at once, averaged (the
-//    platforms of several nodes: the ranks share the cores' memory system and cache).
+//    80386 table per probe group (probe_groups.hpp) to them (NNLS on relative errors); twice:
+//    rank 0 alone while the other ranks sleep (the platform of one node), then every rank at
+//    once, averaged (the platforms of several nodes: the ranks share the cores' memory system and
+//    cache).
 //  - Memory: the host's physical memory shared by the ranks on it.
 #include <string>
 #include <vector>

@@ -25,19 +25,19 @@ CpuProbe measure_cpu(const std::string& root, double min_seconds, const ProbeRan
   // then price the far lines alone. MultiScatter's triangle records: the bone's triangles among
   // 1 and 2 nodes. Three bones overlapping, and a pair's node's half of the triangles: the active
   // z-buffer's tested and appended pixels in other proportions than the bone's.
-  render_loops(p, load(root + "/scenes/bone.json", 512), false);
-  render_loops(p, load(root + "/scenes/bone.json", 1024), false);
-  render_loops(p, load(root + "/scenes/bone.json", 2048), false);
-  render_loops(p, load(root + "/scenes/bone.json", 4096), true);
-  active_loops(p, load(root + "/scenes/bone.json", 4096), false);
-  active_loops(p, load(root + "/scenes/bones.json", 2048), true);
+  render_loops(p, load_probe_scene(root + "/scenes/bone.json", 512), false);
+  render_loops(p, load_probe_scene(root + "/scenes/bone.json", 1024), false);
+  render_loops(p, load_probe_scene(root + "/scenes/bone.json", 2048), false);
+  render_loops(p, load_probe_scene(root + "/scenes/bone.json", 4096), true);
+  active_loops(p, load_probe_scene(root + "/scenes/bone.json", 4096), false);
+  active_loops(p, load_probe_scene(root + "/scenes/bones.json", 2048), true);
   for (int size : {512, 1024, 2048, 4096})
-    near_loops(p, load(root + "/scenes/bone.json", size));
-  near_loops(p, load(root + "/scenes/blazek/thesis_spheres_16.json", 512));
-  near_loops(p, load(root + "/scenes/blazek_fig9.sdl", 4096));
-  multiscatter_loops(p, load(root + "/scenes/bone.json", 1024), 1);
-  multiscatter_loops(p, load(root + "/scenes/bone.json", 1024), 2);
-  sphere_loops(p, load(root + "/scenes/blazek/thesis_spheres_16.json", 512));
+    near_loops(p, load_probe_scene(root + "/scenes/bone.json", size));
+  near_loops(p, load_probe_scene(root + "/scenes/blazek/thesis_spheres_16.json", 512));
+  near_loops(p, load_probe_scene(root + "/scenes/blazek_fig9.sdl", 4096));
+  multiscatter_loops(p, load_probe_scene(root + "/scenes/bone.json", 1024), 1);
+  multiscatter_loops(p, load_probe_scene(root + "/scenes/bone.json", 1024), 2);
+  sphere_loops(p, load_probe_scene(root + "/scenes/blazek/thesis_spheres_16.json", 512));
   buffer_loops(p, 4096, true);
   buffer_loops(p, 5120, false);
   // Every loop recorded in block order, so a block's loops come after those it subtracts.

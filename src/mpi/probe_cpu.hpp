@@ -3,7 +3,7 @@
 // code the algorithms call (projection, set-up, the scanline z-buffer, span lists and the active
 // pixel z-buffer, a fresh frame buffer, both merges, the final pixels packed and pasted,
 // tessellation, the load estimate), on scenes none of the validation workloads uses, at their
-// sizes. The loops are solved in a fixed order, each block of loops for its own cost groups with
+// sizes. The loops are solved in a fixed order, each block of loops for its own probe groups with
 // the groups measured before it subtracted (docs/machines.md, "How the probe measures the CPU").
 #include <functional>
 #include <string>
@@ -16,7 +16,7 @@
 namespace zc {
 
 // What the probe found on this rank's CPU: seconds per counted operation, and the multiplier of
-// each of the probe's cost groups on its prior table (what `cost` scales).
+// each of the probe groups (probe_groups.hpp) on its prior table (what `cost` scales).
 struct CpuCosts {
   CostTable cost;
   std::vector<double> multipliers;

@@ -4,8 +4,8 @@
 
 namespace zc::cpu_probe {
 
-const std::vector<CostGroup>& probe_groups() {
-  static const std::vector<CostGroup> g = {
+const std::vector<CounterGroup>& probe_groups() {
+  static const std::vector<CounterGroup> g = {
       {"vertex", {"vertices_transformed"}},
       {"triangle", {"triangles_in", "triangles_culled", "triangles_clipped", "triangles_setup"}},
       {"estimate", {"triangles_estimated", "rows_scanned"}},
@@ -31,8 +31,8 @@ const std::vector<CostGroup>& probe_groups() {
   return g;
 }
 
-const std::vector<Block>& blocks() {
-  static const std::vector<Block> b = {
+const std::vector<LoopBlock>& loop_blocks() {
+  static const std::vector<LoopBlock> b = {
       {"project", {kVertex}},
       {"set-up", {kTriangle}},
       {"load estimate", {kEstimate}},

@@ -29,7 +29,7 @@ double cpu_now() {
 void Probe::time(std::size_t block, const std::string& what, std::function<void()> prep,
                  std::function<void(Counters&)> fn) {
   jobs.push_back({block,
-                  std::string(blocks()[block].name) + " " + what,
+                  std::string(loop_blocks()[block].name) + " " + what,
                   std::move(prep),
                   std::move(fn),
                   {},
@@ -80,13 +80,13 @@ void Probe::run() {
   jobs.clear();
 }
 
-Picture load(const std::string& path, int size) {
+ProbeScene load_probe_scene(const std::string& path, int size) {
   LoadOptions lo;
   lo.width = lo.height = size;
-  Picture p{load_scene(path, lo), "", size};
-  p.name = p.s.path.substr(p.s.path.find_last_of('/') + 1) + " " + std::to_string(size) + "x" +
-           std::to_string(size);
-  return p;
+  ProbeScene ps{load_scene(path, lo), "", size};
+  ps.name = ps.scene.path.substr(ps.scene.path.find_last_of('/') + 1) + " " + std::to_string(size) +
+            "x" + std::to_string(size);
+  return ps;
 }
 
 // Every vertex of `s` projected by `nr` (the loops' inputs; their counts are not timed).

@@ -1,7 +1,7 @@
 #pragma once
 // The probe's timing harness (probe_cpu.hpp): loops registered by the workload builders
 // (probe_workloads.hpp), then timed round by round on this thread's CPU clock, alone and with
-// every rank at once; and the pictures the workloads are made of.
+// every rank at once; and the scenes the workloads are made of.
 #include <cstddef>
 #include <functional>
 #include <string>
@@ -64,13 +64,14 @@ struct Probe {
   void run();
 };
 
-// A scene at a size, as a workload's loops are named after it.
-struct Picture {
-  Scene s;
+// A scene loaded at a size (the probe's input, not a rendered picture), and the name its loops
+// carry: file name and size.
+struct ProbeScene {
+  Scene scene;
   std::string name;
   int size;
 };
-Picture load(const std::string& path, int size);
+ProbeScene load_probe_scene(const std::string& path, int size);
 
 // Every vertex of `s` projected by `nr` (the loops' inputs; their counts are not timed).
 std::vector<ProjectedVertex> probe_projected_vertices(const NodeRenderer& nr, const Scene& s);

@@ -20,7 +20,7 @@ namespace {
 double solve_block(std::size_t b, const std::vector<Loop>& loops,
                    const std::vector<std::vector<double>>& A, const std::vector<double>& alone,
                    std::vector<double>& k, std::vector<bool>& known) {
-  const auto& gs = blocks()[b].groups;
+  const auto& gs = loop_blocks()[b].groups;
   double alone_sum = 0;
   for (std::size_t g : gs)
     alone_sum += alone.empty() ? 0.0 : alone[g];
@@ -32,7 +32,7 @@ double solve_block(std::size_t b, const std::vector<Loop>& loops,
     double rest = loops[i].seconds;
     std::vector<double> row;
     double at_alone = 0; // the block's groups priced at the alone multipliers
-    for (std::size_t g = 0; g < kGroups; ++g) {
+    for (std::size_t g = 0; g < kProbeGroups; ++g) {
       const bool mine = std::find(gs.begin(), gs.end(), g) != gs.end();
       if (known[g])
         rest -= k[g] * A[i][g];
@@ -49,7 +49,7 @@ double solve_block(std::size_t b, const std::vector<Loop>& loops,
     r.push_back(rest / loops[i].seconds);
   }
   if (M.empty())
-    throw std::logic_error(std::string("probe block without loop: ") + blocks()[b].name);
+    throw std::logic_error(std::string("probe block without loop: ") + loop_blocks()[b].name);
   const std::vector<double> x = nnls(M, r);
   // A core that shares the memory system and the last-level cache with busy ones is no faster
   // than alone: at once, a group's cost is floored at its alone cost (the fit's slowdown, returned,
@@ -71,34 +71,34 @@ double solve_block(std::size_t b, const std::vector<Loop>& loops,
 std::vector<double> solve(const std::vector<Loop>& loops, const std::vector<double>& alone,
                           nlohmann::json& log) {
   const CostTable prior = probe_prior();
-  std::vector<double> k(kGroups, 0.0);
-  std::vector<bool> known(kGroups, false);
+  std::vector<double> k(kProbeGroups, 0.0);
+  std::vector<bool> known(kProbeGroups, false);
   std::vector<std::vector<double>> A;
   for (const Loop& l : loops)
     A.push_back(group_seconds(prior, probe_groups(), l.c));
   nlohmann::json slowdown = nlohmann::json::object();
-  for (std::size_t b = 0; b < blocks().size(); ++b) {
+  for (std::size_t b = 0; b < loop_blocks().size(); ++b) {
     const double s = solve_block(b, loops, A, alone, k, known);
-    if (blocks()[b].groups.size() > 1 && !alone.empty()) slowdown[blocks()[b].name] = s;
+    if (loop_blocks()[b].groups.size() > 1 && !alone.empty()) slowdown[loop_blocks()[b].name] = s;
   }
   nlohmann::json rows = nlohmann::json::array(), groups = nlohmann::json::array(),
                  mult = nlohmann::json::object(), per_op = nlohmann::json::object();
   for (std::size_t i = 0; i < loops.size(); ++i) {
     double pred = 0;
     nlohmann::json by_group = nlohmann::json::object();
-    for (std::size_t g = 0; g < kGroups; ++g) {
+    for (std::size_t g = 0; g < kProbeGroups; ++g) {
       pred += k[g] * A[i][g];
       if (A[i][g] > 0) by_group[probe_groups()[g].name] = A[i][g];
     }
     rows.push_back({{"loop", loops[i].name},
-                    {"block", blocks()[loops[i].block].name},
+                    {"block", loop_blocks()[loops[i].block].name},
                     {"seconds", loops[i].seconds},
                     {"calls", loops[i].calls},
                     {"counters", loops[i].c},
                     {"prior_s", by_group},
                     {"predicted_s", pred}});
   }
-  for (std::size_t g = 0; g < kGroups; ++g) {
+  for (std::size_t g = 0; g < kProbeGroups; ++g) {
     groups.push_back({{"group", probe_groups()[g].name}, {"fields", probe_groups()[g].fields}});
     mult[probe_groups()[g].name] = k[g];
   }

@@ -1,6 +1,6 @@
 #pragma once
 // The probe's fit (probe_cpu.hpp): the timed loops solved block by block, in order, for one
-// multiplier a cost group on the prior table (probe_groups.hpp).
+// multiplier a probe group on the prior table (probe_groups.hpp).
 #include <vector>
 
 #include <nlohmann/json.hpp>

@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <memory>
 
-#include "algo/composite.hpp"
 #include "algo/charles/elastic_multiscatter.hpp"
 #include "algo/charles/elastic_partition.hpp"
 #include "algo/charles/elastic_vertices.hpp"
+#include "algo/composite.hpp"
 #include "compositing/dense.hpp"
 #include "compositing/gather.hpp"
 #include "compositing/winning_pixels.hpp"
@@ -90,14 +90,14 @@ void time_pair_loops(Probe& p, const std::string& name, const PairInputs& in) {
 // (the bone's 1.1 MB of projected vertices: more than a second-level cache of 1 MB), each
 // triangle's three would miss that cache too, a cost no counter has, which the fit put on the far
 // lines; the workloads read theirs in the order of a mesh listed with locality.
-struct ScatteredPicture {
+struct ScatteredScene {
   Scene s;
   NodeRenderer nr;
   std::vector<ProjectedVertex> pv;
   Framebuffer fb;
-  explicit ScatteredPicture(const Picture& pic)
-      : s(shuffled(pic.s)), nr(s), pv(probe_projected_vertices(nr, s)),
-        fb(nr.make_framebuffer(RowSet::all(pic.size))) {}
+  explicit ScatteredScene(const ProbeScene& ps)
+      : s(shuffled(ps.scene)), nr(s), pv(probe_projected_vertices(nr, s)),
+        fb(nr.make_framebuffer(RowSet::all(ps.size))) {}
   static Scene shuffled(Scene s) {
     SplitMix64 rng(20261202);
     for (std::size_t i = s.triangles.size(); i > 1; --i)
@@ -113,12 +113,12 @@ struct ScatteredPicture {
 // scan conversion, as elastic's slices and Blazek's nodes run it), Kurc et al.'s span lists and
 // active pixel z-buffer, the load estimate. `kurc`: also the active merge and the output (final
 // pixels packed, unpacked and pasted into the picture), on this picture's active pixels.
-// Also the z-buffer on the triangles scattered (ScatteredPicture), timed in the same rounds as in
+// Also the z-buffer on the triangles scattered (ScatteredScene), timed in the same rounds as in
 // file order: the fit prices far lines on the difference, and timed apart, minutes later, the
 // host's drift between the two went into it.
-void render_loops(Probe& p, const Picture& pic, bool kurc) {
-  const Scene& s = pic.s;
-  const int size = pic.size;
+void render_loops(Probe& p, const ProbeScene& ps, bool kurc) {
+  const Scene& s = ps.scene;
+  const int size = ps.size;
   const NodeRenderer nr(s);
   const std::vector<ProjectedVertex> pv = probe_projected_vertices(nr, s);
   Counters ignored;
@@ -132,7 +132,7 @@ void render_loops(Probe& p, const Picture& pic, bool kurc) {
   Framebuffer fb = nr.make_framebuffer(RowSet::all(size));
   Framebuffer picture = kurc ? nr.make_framebuffer(RowSet::all(size)) : Framebuffer{};
   std::vector<ProjectedVertex> pv2(pv.size());
-  p.time(kProjectLoops, pic.name, [&](Counters& c) {
+  p.time(kProjectLoops, ps.name, [&](Counters& c) {
     for (std::size_t i = 0; i < pv2.size(); ++i)
       pv2[i] = nr.project(s.vertices[i], c);
   });
@@ -141,23 +141,23 @@ void render_loops(Probe& p, const Picture& pic, bool kurc) {
     one.clear();
     nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, one, c);
   };
-  p.time(kSetupLoops, pic.name, [&](Counters& c) {
+  p.time(kSetupLoops, ps.name, [&](Counters& c) {
     for (std::size_t i = 0; i < s.triangles.size(); ++i)
       setup(i, c);
   });
   p.time(
-      kZbufferLoops, pic.name, [&] { fb.clear(nr.background()); },
+      kZbufferLoops, ps.name, [&] { fb.clear(nr.background()); },
       [&](Counters& c) {
         for (std::size_t i = 0; i < s.triangles.size(); ++i) {
           setup(i, c);
           draw_batch(one, nr.shade(), fb, c);
         }
       });
-  const auto scattered = std::make_unique<ScatteredPicture>(pic);
-  time_zbuffer_loop(p, pic.name + " scattered", scattered->s, scattered->nr, scattered->pv,
+  const auto scattered = std::make_unique<ScatteredScene>(ps);
+  time_zbuffer_loop(p, ps.name + " scattered", scattered->s, scattered->nr, scattered->pv,
                     scattered->fb);
   std::vector<RowExtent> ext(s.triangles.size());
-  p.time(kEstimateLoops, pic.name, [&](Counters& c) {
+  p.time(kEstimateLoops, ps.name, [&](Counters& c) {
     for (std::size_t i = 0; i < s.triangles.size(); ++i) {
       const Triangle& t = s.triangles[i];
       const ProjectedVertex* p3[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
@@ -167,16 +167,15 @@ void render_loops(Probe& p, const Picture& pic, bool kurc) {
     c.triangles_estimated = s.triangles.size();
     c.rows_scanned = rows.size();
   });
-  p.time(kSpanListLoops, pic.name,
-         [&](Counters& c) { (void)build_span_lists(all, size, size, c); });
-  p.time(kActiveLoops, pic.name,
+  p.time(kSpanListLoops, ps.name, [&](Counters& c) { (void)build_span_lists(all, size, size, c); });
+  p.time(kActiveLoops, ps.name,
          [&](Counters& c) { (void)zbuffer_spans(lists, all, nr.shade(), size, c); });
   if (kurc) {
     const PairInputs pair = pair_inputs(s, nr, pv, size);
-    time_pair_loops(p, pic.name, pair);
+    time_pair_loops(p, ps.name, pair);
     // Kurc et al.'s output (compositing/gather.hpp): the final pixels packed into a message, which
     // node 0 unpacks and pastes into the picture.
-    p.time(kOutputLoops, pic.name, [&](Counters& c) {
+    p.time(kOutputLoops, ps.name, [&](Counters& c) {
       std::vector<Message> parts;
       parts.push_back(
           compositing::pack_pixels(wpa, compositing::sparse_message, kurc_pixel_records(), c));
@@ -187,7 +186,7 @@ void render_loops(Probe& p, const Picture& pic, bool kurc) {
     Framebuffer full = nr.make_framebuffer(RowSet::all(size));
     scatter_active(wpa, full);
     const auto dense = compositing::dense(std::move(full), kurc_pixel_records());
-    p.time(kDenseOutputLoops, pic.name, [&](Counters& c) { (void)dense->final_pixels(c); });
+    p.time(kDenseOutputLoops, ps.name, [&](Counters& c) { (void)dense->final_pixels(c); });
     p.run();
     return;
   }
@@ -197,8 +196,8 @@ void render_loops(Probe& p, const Picture& pic, bool kurc) {
 // Kurc et al.'s active z-buffer (`zbuffer_spans`) on every second triangle of the picture (dealt
 // round-robin, as a pair's node gets them: about twice the share of pixels appended), and with
 // `whole` on all of them too. Its span lists are made once, untimed.
-void active_loops(Probe& p, const Picture& pic, bool whole) {
-  const Scene& s = pic.s;
+void active_loops(Probe& p, const ProbeScene& ps, bool whole) {
+  const Scene& s = ps.scene;
   const NodeRenderer nr(s);
   const std::vector<ProjectedVertex> pv = probe_projected_vertices(nr, s);
   Counters ignored;
@@ -207,13 +206,13 @@ void active_loops(Probe& p, const Picture& pic, bool whole) {
     nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, all, ignored);
     if (i % 2 == 0) nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, half, ignored);
   }
-  const SpanLists all_lists = build_span_lists(all, pic.size, pic.size, ignored);
-  const SpanLists half_lists = build_span_lists(half, pic.size, pic.size, ignored);
+  const SpanLists all_lists = build_span_lists(all, ps.size, ps.size, ignored);
+  const SpanLists half_lists = build_span_lists(half, ps.size, ps.size, ignored);
   if (whole)
-    p.time(kActiveLoops, pic.name,
-           [&](Counters& c) { (void)zbuffer_spans(all_lists, all, nr.shade(), pic.size, c); });
-  p.time(kActiveLoops, pic.name + " one node of two",
-         [&](Counters& c) { (void)zbuffer_spans(half_lists, half, nr.shade(), pic.size, c); });
+    p.time(kActiveLoops, ps.name,
+           [&](Counters& c) { (void)zbuffer_spans(all_lists, all, nr.shade(), ps.size, c); });
+  p.time(kActiveLoops, ps.name + " one node of two",
+         [&](Counters& c) { (void)zbuffer_spans(half_lists, half, nr.shade(), ps.size, c); });
   p.run();
 }
 
@@ -223,9 +222,9 @@ void active_loops(Probe& p, const Picture& pic, bool whole) {
 // edges, spans and fragments without them (on whole pictures, fragments and far lines grow
 // together and traded cost from one probe to the next: docs/machines.md). The band's depth, ids
 // and colours (about 1.4 MB) stay in this machine's 2 MB L2, as the window assumes.
-void near_loops(Probe& p, const Picture& pic) {
-  const Scene& s = pic.s;
-  const int size = pic.size;
+void near_loops(Probe& p, const ProbeScene& ps) {
+  const Scene& s = ps.scene;
+  const int size = ps.size;
   const int rows = std::min(size, int(RecentLines::kWindow * RecentLines::kLocations) / size);
   const int y0 = (size - rows) / 2;
   const NodeRenderer nr(s);
@@ -240,7 +239,7 @@ void near_loops(Probe& p, const Picture& pic) {
   Framebuffer fb = nr.make_framebuffer(RowSet::band(y0, y0 + rows));
   p.time(
       kNearZbufferLoops,
-      pic.name + " rows " + std::to_string(y0) + "-" + std::to_string(y0 + rows - 1),
+      ps.name + " rows " + std::to_string(y0) + "-" + std::to_string(y0 + rows - 1),
       [&] { fb.clear(nr.background()); },
       [&, one = TriangleBatch{}](Counters& c) mutable {
         for (std::size_t i : in_band) {
@@ -255,8 +254,8 @@ void near_loops(Probe& p, const Picture& pic) {
 // Charles et al.'s MultiScatter of triangles (elastic_multiscatter.hpp) among `nodes` nodes, all
 // in this process: each node's block of the picture's triangles packed for the slices of equal
 // rows, then each slice read out of its messages; the records' bytes as elastic charges them.
-void multiscatter_loops(Probe& p, const Picture& pic, int nodes) {
-  const Scene& s = pic.s;
+void multiscatter_loops(Probe& p, const ProbeScene& ps, int nodes) {
+  const Scene& s = ps.scene;
   const NodeRenderer nr(s);
   const std::vector<ProjectedVertex> pv = probe_projected_vertices(nr, s);
   const std::size_t T = s.triangles.size();
@@ -267,15 +266,15 @@ void multiscatter_loops(Probe& p, const Picture& pic, int nodes) {
       const Triangle& t = s.triangles[i];
       const ProjectedVertex* p3[3] = {&pv[t.v[0]], &pv[t.v[1]], &pv[t.v[2]]};
       RowExtent e;
-      if (!row_extent(p3, pic.size, pic.size, e.y0, e.y1)) e = {1, 0};
+      if (!row_extent(p3, ps.size, ps.size, e.y0, e.y1)) e = {1, 0};
       blocks[k].push_back({std::uint32_t(i), t});
       ext[k].push_back(e);
     }
   std::vector<int> bounds;
   for (int k = 0; k <= nodes; ++k)
-    bounds.push_back(int(block_begin(std::size_t(pic.size), nodes, k)));
+    bounds.push_back(int(block_begin(std::size_t(ps.size), nodes, k)));
   const elastic::BroadcastVertices none;
-  p.time(kMultiScatterLoops, pic.name + " " + std::to_string(nodes) + " nodes", [&](Counters& c) {
+  p.time(kMultiScatterLoops, ps.name + " " + std::to_string(nodes) + " nodes", [&](Counters& c) {
     std::vector<elastic::SlicePayloads> sent;
     for (int k = 0; k < nodes; ++k) {
       sent.push_back(elastic::pack_slices(blocks[k], ext[k], bounds, false, none, c));
@@ -294,23 +293,23 @@ void multiscatter_loops(Probe& p, const Picture& pic, int nodes) {
 
 // Blazek's nodes: the thesis's spheres (the workloads' triangles, as few or as many a sphere)
 // tessellated, then set up and drawn into the node's frame buffer.
-void sphere_loops(Probe& p, const Picture& pic) {
-  const Scene& s = pic.s;
+void sphere_loops(Probe& p, const ProbeScene& ps) {
+  const Scene& s = ps.scene;
   const NodeRenderer nr(s);
   const std::vector<ProjectedVertex> pv = probe_projected_vertices(nr, s);
-  Framebuffer fb = nr.make_framebuffer(RowSet::all(pic.size));
+  Framebuffer fb = nr.make_framebuffer(RowSet::all(ps.size));
   TriangleBatch one;
-  p.time(kTessellateLoops, pic.name, [&](Counters& c) {
+  p.time(kTessellateLoops, ps.name, [&](Counters& c) {
     for (const ObjectDesc& d : s.objects)
       if (d.kind != "mesh") c.triangles_tessellated += tessellate(d).triangles.size();
   });
-  p.time(kSetupLoops, pic.name, [&](Counters& c) {
+  p.time(kSetupLoops, ps.name, [&](Counters& c) {
     for (std::size_t i = 0; i < s.triangles.size(); ++i) {
       one.clear();
       nr.setup(std::uint32_t(i), s.triangles[i], pv.data(), nullptr, one, c);
     }
   });
-  time_zbuffer_loop(p, pic.name, s, nr, pv, fb);
+  time_zbuffer_loop(p, ps.name, s, nr, pv, fb);
   p.run();
 }
 

@@ -8,15 +8,15 @@ namespace zc::cpu_probe {
 
 // Projection, set-up, the frame-buffer z-buffer (in file order and scattered), span lists, the
 // active z-buffer, the load estimate; with `kurc`, the active merge and the output too.
-void render_loops(Probe& p, const Picture& pic, bool kurc);
+void render_loops(Probe& p, const ProbeScene& ps, bool kurc);
 // Kurc et al.'s active z-buffer on a pair's node's half of the triangles (and all with `whole`).
-void active_loops(Probe& p, const Picture& pic, bool whole);
+void active_loops(Probe& p, const ProbeScene& ps, bool whole);
 // The frame-buffer z-buffer in a band of rows the recent-lines window holds (no far line).
-void near_loops(Probe& p, const Picture& pic);
+void near_loops(Probe& p, const ProbeScene& ps);
 // Charles et al.'s MultiScatter of triangles among `nodes` nodes.
-void multiscatter_loops(Probe& p, const Picture& pic, int nodes);
+void multiscatter_loops(Probe& p, const ProbeScene& ps, int nodes);
 // Blazek's nodes: spheres tessellated, set up and drawn.
-void sphere_loops(Probe& p, const Picture& pic);
+void sphere_loops(Probe& p, const ProbeScene& ps);
 // A new frame buffer; with `merges`, locations packed and merged back.
 void buffer_loops(Probe& p, int size, bool merges);
 

@@ -100,7 +100,8 @@ int count_nodes(const sg::Engine& e, const std::string& where) {
   if (!e.host_by_name_or_null(kHostComputerName))
     throw InputError(where, 0, std::string("host '") + kHostComputerName + "' is missing");
   if (int(e.get_host_count()) != P + 1)
-    throw InputError(where, 0, "hosts must be node0..nodeP-1 and srm");
+    throw InputError(where, 0,
+                     std::string("hosts must be node0..nodeP-1 and ") + kHostComputerName);
   return P;
 }
 

@@ -140,7 +140,8 @@ std::string unmodelled_element_reason(const std::string& e) {
       {"trace", "zcube models constant speeds and bandwidths (no traces)"},
       {"trace_connect", "zcube models constant speeds and bandwidths (no traces)"},
       {"include", "zcube reads one self-contained file"},
-      {"router", "zcube's routes join the hosts node0..nodeP-1 and srm only (no routers)"},
+      {"router", std::string("zcube's routes join the hosts node0..nodeP-1 and ") +
+                     kHostComputerName + " only (no routers)"},
       {"AS", "an element of SimGrid's older formats: version 4.1 says <zone>"},
       {"ASroute", "an element of SimGrid's older formats: version 4.1 says <zoneRoute>"},
   };

@@ -23,8 +23,9 @@ std::vector<Link> message_route(Topology t, int P, int src, int dst) {
 
 std::string link_name(const Link& l, int P) {
   // The host computer's link by its platform names (machine/platform_xml.hpp).
-  if (l.first == P) return std::string(kHostDownLink) + " (srm->node 0)";
-  if (l.second == P) return std::string(kHostUpLink) + " (node 0->srm)";
+  const std::string host = kHostComputerName;
+  if (l.first == P) return std::string(kHostDownLink) + " (" + host + "->node 0)";
+  if (l.second == P) return std::string(kHostUpLink) + " (node 0->" + host + ")";
   return "link " + std::to_string(l.first) + "->" + std::to_string(l.second);
 }
 

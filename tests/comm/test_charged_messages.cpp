@@ -34,13 +34,13 @@ TEST(ChargedMessages, TakeTheTimeOfTheirChargedSizeOnEveryFidelity) {
     // 3 hops (node 0 to node 7): 64 bytes of payload charged as 5,000, and the reverse.
     expect_rel(vtime(one_message(f, 7, 64, 5000)), n.message_time(5000, 3), 1e-9, "M<N" + at);
     expect_rel(vtime(one_message(f, 7, 5000, 64)), n.message_time(64, 3), 1e-9, "M>N" + at);
-    // Uncharged: the payload's size, as before.
+    // Bytes sent without a charged size: charged as the payload's size, as before.
     expect_rel(vtime(run_custom(sim_config("ipsc860", 8, Topology::Cube, f),
                                 [](NodeContext& ctx) {
                                   if (ctx.rank() == 0) ctx.comm().send(7, 5, Bytes(5000));
                                   if (ctx.rank() == 7) ctx.comm().recv(0, 5);
                                 })),
-               n.message_time(5000, 3), 1e-9, "uncharged" + at);
+               n.message_time(5000, 3), 1e-9, "charged as payload" + at);
   }
 }
 

@@ -78,7 +78,7 @@ TEST(LocalComm, BlocksArriveWhole) {
   int bad = 0;
   run_local(2, Topology::Ring, [&](Comm& c) {
     if (c.rank() == 0) {
-      c.send_blocks(1, 2, {{0, Message{Bytes(3, 7), 1}}, {5, uncharged(Bytes{})}});
+      c.send_blocks(1, 2, {{0, Message{Bytes(3, 7), 1}}, {5, charged_as_payload(Bytes{})}});
       return;
     }
     Blocks b = c.recv_blocks(0, 2);

@@ -33,7 +33,8 @@ void paste_at_node0(NodeContext& ctx, const Framebuffer& part) {
   // in place to node 0, which displays them: no packing is charged. Only colour travels (ch. V);
   // the picture and its depth map are the rows each node rendered, handed over once sent (the
   // colour node 0 receives is these rows' colour, byte for byte).
-  (void)compositing::gather(ctx.comm(), 0, uncharged(Bytes(part.rgb().begin(), part.rgb().end())));
+  (void)compositing::gather(ctx.comm(), 0,
+                            charged_as_payload(Bytes(part.rgb().begin(), part.rgb().end())));
   (void)coll::gatherv(
       ctx.comm(), 0,
       pack(std::vector<int>{part.rows().begin, part.rows().end, part.rows().stride}));

@@ -52,7 +52,7 @@ void output_picture(NodeContext& ctx, Framebuffer slice,
   // (node 0's colours are theirs, byte for byte).
   if (out.gather)
     (void)compositing::gather(ctx.comm(), 0,
-                              uncharged(Bytes(slice.rgb().begin(), slice.rgb().end())));
+                              charged_as_payload(Bytes(slice.rgb().begin(), slice.rgb().end())));
   const RowSet rows = slice.rows();
   std::int64_t work = 0;
   for (int y = rows.begin; y < rows.end; ++y)

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "algo/blazek/blazek_methods.hpp"
+#include "machine/platform_xml.hpp"
 #include "sim_fixtures.hpp"
 
 using namespace zc;
@@ -24,7 +25,7 @@ nlohmann::json run_method(const std::string& algo, const std::string& scene, int
 double busy_spread(const nlohmann::json& r) {
   double mx = 0, mn = 1e300;
   for (const auto& n : r["per_node"]) {
-    if (n["rank"] == "srm") continue;
+    if (n["rank"] == kHostComputerName) continue;
     mx = std::max(mx, n["busy_s"].get<double>());
     mn = std::min(mn, n["busy_s"].get<double>());
   }
