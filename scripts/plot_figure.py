@@ -1,4 +1,4 @@
-"""The matplotlib machinery of zcube's plot scripts (plot_results.py, plot_gantt.py): figures on the
+"""The matplotlib machinery of zcube's plot scripts (plots/, plot_gantt.py): figures on the
 Agg canvas directly, without pyplot's state machine, and one cache of text sizes for every figure.
 The pictures are pyplot's, byte for byte: the same Figure, the same Agg renderer, the same PNG
 writer with the same options; only the bookkeeping around them is gone.

@@ -15,7 +15,8 @@ trap 'rm -rf "$tmp"' EXIT
 mv "$tmp/prefix" "$tmp/moved"
 fail=0
 for f in bin/zcube share/zcube/scenes/teapot.json share/zcube/platforms/README.md \
-  share/zcube/scripts/plot_results.py share/zcube/tests/golden/runs.json \
+  share/zcube/scripts/plot_results.py share/zcube/scripts/plots/cli.py \
+  share/zcube/tests/golden/runs.json \
   share/zcube/tests/golden/pair-rs-1pot-ipsc2-16.json share/man/man1/zcube.1 \
   share/doc/zcube/LICENSE; do
   [ -e "$tmp/moved/$f" ] || { echo "FAIL not installed: $f"; fail=1; }
