@@ -45,8 +45,8 @@ static int cmd_pingpong(std::vector<std::string> args) {
   nlohmann::json j = report_with_paper_figures(r.report);
   j["provenance"] = provenance();
   if (!report.empty()) write_result_file(report, j.dump(2) + "\n");
-  if (!r.ok) {
-    std::cerr << "zcube: error: " << r.error << "\n";
+  if (!r.ok()) {
+    std::cerr << "zcube: error: " << r.error() << "\n";
     return 1;
   }
   const RunHeader& h = r.report.header;

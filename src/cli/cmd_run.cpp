@@ -46,8 +46,8 @@ static int finish(const RunResult& r, nlohmann::json j, const std::string& repor
     std::cerr << "zcube: error: --gantt " << tl.gantt << ": scripts/plot_gantt.py failed\n";
     return 1;
   }
-  if (!r.ok) {
-    std::cerr << "zcube: error: " << r.error << "\n";
+  if (!r.ok()) {
+    std::cerr << "zcube: error: " << r.error() << "\n";
     return 1;
   }
   if (!image.empty() && !r.images.empty()) write_png(r.images.back(), image);
@@ -221,12 +221,13 @@ static int cmd_run(std::vector<std::string> args) {
   RunResult r =
       o.bands.draws > 0 || o.bands.sensitivity ? run_with_bands(cfg, o.bands) : run_simulation(cfg);
   nlohmann::json j = report_with_paper_figures(r.report);
-  if (r.ok && !o.sensitivity_plot.empty() && !draw_tornado(j, o.sensitivity_plot, source_root())) {
+  if (r.ok() && !o.sensitivity_plot.empty() &&
+      !draw_tornado(j, o.sensitivity_plot, source_root())) {
     std::cerr << "zcube: error: --sensitivity-plot " << o.sensitivity_plot
               << ": scripts/plot_tornado.py failed\n";
     return 1;
   }
-  if (r.ok && seq_s) j["paper"] = paper_figures_for(j, seq_s);
+  if (r.ok() && seq_s) j["paper"] = paper_figures_for(j, seq_s);
   return finish(r, std::move(j), o.report, o.image, o.depth, o.tl);
 }
 

@@ -295,7 +295,7 @@ std::string replay_key(const RunConfig& c) {
 // The point's bands (sim/bands.hpp) when it asks for them, from the trace its run recorded or
 // replayed.
 void attach_bands(const RunConfig& cfg, RunResult& r, const CallTrace* t, const PlatformModel& pm) {
-  if (cfg.band_draws <= 0 || !r.ok) return;
+  if (cfg.band_draws <= 0 || !r.ok()) return;
   const BandsRequest req{.draws = cfg.band_draws, .seed = cfg.band_seed};
   if (t)
     add_bands(r.report, *t, pm, cfg, req);

@@ -52,8 +52,9 @@ struct RunConfig {
 struct RunResult {
   Report report;                   // report_json(report) at the edge
   std::vector<Framebuffer> images; // one per frame (node-delivered)
-  bool ok = true;                  // false: the run failed (e.g. out of node memory)
-  std::string error;
+  // Whether the run ended well, and why not (e.g. out of node memory): the report's own.
+  bool ok() const { return report.ok(); }
+  const std::string& error() const { return report.error; }
 };
 
 } // namespace zc

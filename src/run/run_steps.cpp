@@ -49,11 +49,9 @@ RunHeader header_of(const RunConfig& cfg, const PreparedRun& run, const Executed
 
 RunResult finish_run(const RunConfig& cfg, const PreparedRun& run, Executed done) {
   RunResult res;
-  res.ok = done.failure.empty();
-  res.error = done.failure;
   Report& r = res.report;
   r.header = header_of(cfg, run, done);
-  r.status = res.ok ? "ok" : (done.out_of_memory ? "out_of_memory" : "error");
+  r.status = done.failure.empty() ? "ok" : (done.out_of_memory ? "out_of_memory" : "error");
   r.error = done.failure;
   r.virtual_time_s = done.total_s;
   r.metrics_rank = run.algo->metrics_node ? run.algo->metrics_node(run.options) : 0;
@@ -62,7 +60,7 @@ RunResult finish_run(const RunConfig& cfg, const PreparedRun& run, Executed done
   // An algorithm that draws no picture (a benchmark) has nothing to compare.
   const ImageCheck how{cfg.compare_with_sequential && run.algo->draws_picture, cfg.options.frames,
                        &cfg.reference_lookup};
-  if (res.ok) r.image = check_images(res.images, run.scene(), how);
+  if (res.ok()) r.image = check_images(res.images, run.scene(), how);
   r.host.wall_time_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - run.started).count();
   r.host.peak_rss_bytes = peak_rss_bytes();

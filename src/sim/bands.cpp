@@ -272,7 +272,7 @@ RunResult run_with_bands(const RunConfig& cfg, const BandsRequest& req, const Sc
   std::shared_ptr<CallTrace> trace;
   PlatformModel pm;
   RunResult r = record_simulation(cfg, preloaded, trace, &pm);
-  if (!r.ok) return r;
+  if (!r.ok()) return r;
   if (!simulated_why.empty() && req.draws > 0) {
     nlohmann::json b = band_header(cfg, req, pm.machine, "simulated");
     b["why_simulated"] = simulated_why;

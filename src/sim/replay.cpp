@@ -195,7 +195,7 @@ RunResult record_simulation(const RunConfig& cfg, const Scene* preloaded,
   c.custom = std::make_shared<const Algorithm>(
       recording_algorithm(cfg.custom ? *cfg.custom : find_algorithm(cfg.algorithm), trace));
   RunResult r = run_simulation(c, preloaded, model);
-  if (!r.ok || trace->read_clock)
+  if (!r.ok() || trace->read_clock)
     trace = nullptr;
   else
     trace->image = r.report.image;
@@ -214,7 +214,7 @@ std::optional<RunResult> replay_simulation(const RunConfig& cfg, const Scene* pr
     if (why) *why = divergence();
     return std::nullopt;
   }
-  if (r.ok) r.report.image = trace->image;
+  if (r.ok()) r.report.image = trace->image;
   return r;
 }
 

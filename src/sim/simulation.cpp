@@ -229,8 +229,9 @@ std::vector<NodeRecord> records_of(const std::vector<std::unique_ptr<SimContext>
 
 // The run on SimGrid: the machine loaded into a fresh engine, a context per rank (and one for the
 // host computer), the ranks run to their end or the first failure.
-Executed execute_on_simgrid(const RunConfig& cfg, const PreparedRun& run, PlatformModel* model,
-                            SimCost& sim_cost, PlatformModel& pm) {
+// `pm` receives the machine the run was priced on.
+Executed execute_on_simgrid(const RunConfig& cfg, const PreparedRun& run, SimCost& sim_cost,
+                            PlatformModel& pm) {
   const Algorithm& algo = *run.algo;
   const Scene& scene = run.scene();
   const PlatformSource src = platform_source(cfg);
@@ -243,7 +244,6 @@ Executed execute_on_simgrid(const RunConfig& cfg, const PreparedRun& run, Platfo
   sg::Engine e(&argc, argv.data());
   keep_stacks_on_fresh_pages();
   pm = load_machine(e, cfg, src);
-  if (model) *model = pm;
   const int P = pm.nodes;
   if (algo.check_nodes) algo.check_nodes(run.options, P);
 
@@ -291,7 +291,8 @@ RunResult run_simulation(const RunConfig& cfg, const Scene* preloaded, PlatformM
       prepare_run(cfg, preloaded, is_platform_file(cfg.machine) || cfg.topology == Topology::Cube);
   SimCost sim_cost;
   PlatformModel pm;
-  RunResult res = finish_run(cfg, run, execute_on_simgrid(cfg, run, model, sim_cost, pm));
+  RunResult res = finish_run(cfg, run, execute_on_simgrid(cfg, run, sim_cost, pm));
+  if (model) *model = pm;
   res.report.model = model_section(pm, cfg.what_ifs);
   // What the simulation cost in events: the same in every run of this configuration, on any host.
   res.report.simulation_cost = sim_cost;
